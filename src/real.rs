@@ -1,0 +1,601 @@
+//! The float/lane abstraction every kernel is written against.
+//!
+//! [`Real`] is implemented for `f32`, `f64`, [`wide::f32x8`] and [`wide::f64x4`]. A kernel
+//! written once as `fn d<T: Real>(n_dot_h: T, alpha: T) -> T` runs on one value or on eight
+//! lanes at a time. Branches on lane values become [`Real::select`] on a [`Mask`]
+//! (`bool` for scalars, an all-ones/all-zeros lane mask for SIMD types).
+//!
+//! # Semantics shared by every implementation
+//! - `min`/`max`: `a.max(b)` is `b` where `a < b` and `a` otherwise, so a NaN in `self`
+//!   propagates and a NaN in the argument is ignored. `clamp(x, lo, hi)` therefore returns
+//!   NaN for a NaN `x` on every path (the lane instructions `minps`/`maxps` and `libm::fmin`
+//!   disagree on NaN; this definition is the same everywhere).
+//! - `recip` is the correctly rounded `1 / x` (not the 12-bit `rcpps` estimate).
+//! - `mul_add(a, b)` is `self * a + b`, fused when the target has FMA (`target_feature =
+//!   "fma"`) and two roundings otherwise, identically for scalar and lane types on one target.
+//!
+//! # Accuracy of the lane paths
+//! Scalar paths call `libm` (correctly rounded or within 1 ULP for the functions used). Lane
+//! paths use `wide`'s polynomials where they are accurate and fall back to `libm` per lane
+//! where they are not. The bound of each lane function against the scalar one, over its whole
+//! domain including 0, subnormals, huge values and infinities, is listed on the method and
+//! enforced by `tests/lanes_vs_scalar.rs`:
+//!
+//! | function | f32x8 vs f32 | f64x4 vs f64 | lane implementation |
+//! |---|---|---|---|
+//! | `sqrt`, `recip`, `abs`, `min`, `max`, `mul_add` | 0 ULP | 0 ULP | IEEE instructions |
+//! | `exp`, `exp2` | 2 ULP | 2 ULP | `wide` polynomial |
+//! | `ln` | 2 ULP | 2 ULP | `wide` polynomial, subnormals rescaled |
+//! | `sin`, `cos` (\|x\| <= 1e4) | 2 ULP | 2 ULP | `wide` polynomial |
+//! | `atan2`, `acos`, `asin`, `atan` | 2 ULP | 2 ULP | `wide` polynomial |
+//! | `pow`, `erf`, `tan` | 0 ULP | 0 ULP | `libm` per lane |
+//!
+//! `pow` maps to `libm` per lane because an `exp(y ln x)` polynomial loses `|y ln x|` ULP,
+//! which is thousands of ULP for the Phong exponents (10^4) this crate feeds it.
+
+use core::fmt::Debug;
+use core::ops::{
+    Add, AddAssign, BitAnd, BitOr, Div, DivAssign, Mul, MulAssign, Neg, Not, Sub, SubAssign,
+};
+use wide::{f32x8, f64x4};
+
+/// A lane mask: the result of a comparison, consumed by [`Real::select`].
+///
+/// `bool` for scalar types; for SIMD types, a vector whose lanes are all ones (true) or all
+/// zeros (false).
+pub trait Mask:
+    Copy + Debug + BitAnd<Output = Self> + BitOr<Output = Self> + Not<Output = Self>
+{
+    /// True when at least one lane is set.
+    fn any(self) -> bool;
+    /// True when every lane is set.
+    fn all(self) -> bool;
+}
+
+impl Mask for bool {
+    #[inline]
+    fn any(self) -> bool {
+        self
+    }
+    #[inline]
+    fn all(self) -> bool {
+        self
+    }
+}
+
+impl Mask for f32x8 {
+    #[inline]
+    fn any(self) -> bool {
+        f32x8::any(self)
+    }
+    #[inline]
+    fn all(self) -> bool {
+        f32x8::all(self)
+    }
+}
+
+impl Mask for f64x4 {
+    #[inline]
+    fn any(self) -> bool {
+        f64x4::any(self)
+    }
+    #[inline]
+    fn all(self) -> bool {
+        f64x4::all(self)
+    }
+}
+
+/// A real number type, scalar (`f32`, `f64`) or a SIMD vector of lanes (`f32x8`, `f64x4`).
+///
+/// Every kernel in this crate is generic over `Real`. See the [module docs](self) for the
+/// shared NaN semantics and the accuracy table of the lane paths.
+pub trait Real:
+    Copy
+    + Debug
+    + Add<Output = Self>
+    + Sub<Output = Self>
+    + Mul<Output = Self>
+    + Div<Output = Self>
+    + Neg<Output = Self>
+    + AddAssign
+    + SubAssign
+    + MulAssign
+    + DivAssign
+    + 'static
+{
+    /// The type of one lane: `f32` for `f32` and `f32x8`, `f64` for `f64` and `f64x4`.
+    type Scalar: Real<Scalar = Self::Scalar, Mask = bool> + PartialOrd + Into<f64>;
+    /// The result of a comparison.
+    type Mask: Mask;
+
+    /// Number of lanes (1 for scalars).
+    const LANES: usize;
+    /// 0.
+    const ZERO: Self;
+    /// 1.
+    const ONE: Self;
+    /// 1/2.
+    const HALF: Self;
+    /// 2.
+    const TWO: Self;
+    /// pi.
+    const PI: Self;
+    /// 1/pi.
+    const FRAC_1_PI: Self;
+    /// Machine epsilon of the lane type (2^-23 for f32, 2^-52 for f64).
+    const EPSILON: Self;
+    /// Smallest positive normal value of the lane type.
+    const MIN_POSITIVE: Self;
+    /// Largest finite value of the lane type.
+    const MAX: Self;
+    /// Positive infinity.
+    const INFINITY: Self;
+
+    /// Every lane set to `v`, rounded to the lane type (use for literals and constants).
+    fn splat(v: f64) -> Self;
+    /// Every lane set to `v`.
+    fn from_scalar(v: Self::Scalar) -> Self;
+    /// Builds a value lane by lane: lane `i` is `f(i)`.
+    fn from_fn(f: impl FnMut(usize) -> Self::Scalar) -> Self;
+    /// Lane `i` (`i < LANES`; lane 0 for out-of-range indices on scalars).
+    fn lane(self, i: usize) -> Self::Scalar;
+
+    /// Lane-wise `self < o` (false where either is NaN).
+    fn simd_lt(self, o: Self) -> Self::Mask;
+    /// Lane-wise `self <= o` (false where either is NaN).
+    fn simd_le(self, o: Self) -> Self::Mask;
+    /// Lane-wise `self > o` (false where either is NaN).
+    fn simd_gt(self, o: Self) -> Self::Mask;
+    /// Lane-wise `self >= o` (false where either is NaN).
+    fn simd_ge(self, o: Self) -> Self::Mask;
+    /// Lane-wise `self == o` (false where either is NaN).
+    fn simd_eq(self, o: Self) -> Self::Mask;
+    /// Lane-wise NaN test.
+    fn is_nan(self) -> Self::Mask;
+    /// Lane-wise test for a finite value (not NaN, not infinite).
+    fn is_finite(self) -> Self::Mask;
+    /// Lane-wise `if m { t } else { f }`.
+    fn select(m: Self::Mask, t: Self, f: Self) -> Self;
+
+    /// `o` where `self > o`, else `self`: NaN in `self` propagates, NaN in `o` is ignored.
+    fn min(self, o: Self) -> Self;
+    /// `o` where `self < o`, else `self`: NaN in `self` propagates, NaN in `o` is ignored.
+    fn max(self, o: Self) -> Self;
+    /// `self.max(lo).min(hi)`; NaN propagates. Requires `lo <= hi`.
+    #[inline]
+    fn clamp(self, lo: Self, hi: Self) -> Self {
+        self.max(lo).min(hi)
+    }
+    /// `clamp(self, 0, 1)`; NaN propagates.
+    #[inline]
+    fn saturate(self) -> Self {
+        self.clamp(Self::ZERO, Self::ONE)
+    }
+    /// `self * a + b`, fused when the target has FMA.
+    fn mul_add(self, a: Self, b: Self) -> Self;
+    /// Square root, correctly rounded; NaN for negative input.
+    fn sqrt(self) -> Self;
+    /// `sqrt(max(self, 0))`: the square root of a quantity that is non-negative in exact
+    /// arithmetic but may round slightly below zero. NaN propagates.
+    #[inline]
+    fn sqrt_nonneg(self) -> Self {
+        self.max(Self::ZERO).sqrt()
+    }
+    /// `1 / self`, correctly rounded.
+    fn recip(self) -> Self;
+    /// Absolute value.
+    fn abs(self) -> Self;
+    /// `|self|` with the sign bit of `sign`.
+    fn copysign(self, sign: Self) -> Self;
+    /// Largest integer not above `self`.
+    fn floor(self) -> Self;
+    /// e^self. Lanes: within 2 ULP of the scalar path.
+    fn exp(self) -> Self;
+    /// 2^self. Lanes: within 2 ULP of the scalar path.
+    fn exp2(self) -> Self;
+    /// Natural logarithm; -inf at 0, NaN below 0. Lanes: within 2 ULP of the scalar path.
+    fn ln(self) -> Self;
+    /// `self^e` with C99 `pow` semantics. Lanes: `libm` per lane, identical to scalar.
+    fn pow(self, e: Self) -> Self;
+    /// The error function. Lanes: `libm` per lane, identical to scalar.
+    fn erf(self) -> Self;
+    /// Sine. Lanes: within 2 ULP of the scalar path for |x| <= 1e4.
+    fn sin(self) -> Self;
+    /// Cosine. Lanes: within 2 ULP of the scalar path for |x| <= 1e4.
+    fn cos(self) -> Self;
+    /// Tangent. Lanes: `libm` per lane, identical to scalar.
+    fn tan(self) -> Self;
+    /// Arc tangent, in [-pi/2, pi/2]. Lanes: within 2 ULP of the scalar path.
+    fn atan(self) -> Self;
+    /// Four-quadrant arc tangent of `self / x`, in [-pi, pi]. Lanes: within 2 ULP.
+    fn atan2(self, x: Self) -> Self;
+    /// Arc cosine, in [0, pi]; NaN outside [-1, 1]. Lanes: within 2 ULP.
+    fn acos(self) -> Self;
+    /// Arc sine, in [-pi/2, pi/2]; NaN outside [-1, 1]. Lanes: within 2 ULP.
+    fn asin(self) -> Self;
+
+    /// `self^n` for a small non-negative integer `n` by repeated squaring: exact-ish and far
+    /// cheaper than [`Real::pow`] (Schlick's `(1 - c)^5` uses it).
+    #[inline]
+    fn powi(self, n: u32) -> Self {
+        let mut base = self;
+        let mut acc = Self::ONE;
+        let mut k = n;
+        while k > 0 {
+            if k & 1 == 1 {
+                acc *= base;
+            }
+            base *= base;
+            k >>= 1;
+        }
+        acc
+    }
+    /// `self * self`.
+    #[inline]
+    fn sq(self) -> Self {
+        self * self
+    }
+}
+
+macro_rules! impl_real_scalar {
+    ($t:ident, $bits:literal, $exp:path, $exp2:path, $ln:path, $pow:path, $erf:path, $sin:path,
+     $cos:path, $tan:path, $atan:path, $atan2:path, $acos:path, $asin:path, $sqrt:path,
+     $fma:path, $copysign:path, $floor:path) => {
+        impl Real for $t {
+            type Scalar = $t;
+            type Mask = bool;
+            const LANES: usize = 1;
+            const ZERO: Self = 0.0;
+            const ONE: Self = 1.0;
+            const HALF: Self = 0.5;
+            const TWO: Self = 2.0;
+            const PI: Self = core::$t::consts::PI;
+            const FRAC_1_PI: Self = core::$t::consts::FRAC_1_PI;
+            const EPSILON: Self = $t::EPSILON;
+            const MIN_POSITIVE: Self = $t::MIN_POSITIVE;
+            const MAX: Self = $t::MAX;
+            const INFINITY: Self = $t::INFINITY;
+
+            #[inline]
+            fn splat(v: f64) -> Self {
+                v as $t
+            }
+            #[inline]
+            fn from_scalar(v: Self) -> Self {
+                v
+            }
+            #[inline]
+            fn from_fn(mut f: impl FnMut(usize) -> Self) -> Self {
+                f(0)
+            }
+            #[inline]
+            fn lane(self, _i: usize) -> Self {
+                self
+            }
+            #[inline]
+            fn simd_lt(self, o: Self) -> bool {
+                self < o
+            }
+            #[inline]
+            fn simd_le(self, o: Self) -> bool {
+                self <= o
+            }
+            #[inline]
+            fn simd_gt(self, o: Self) -> bool {
+                self > o
+            }
+            #[inline]
+            fn simd_ge(self, o: Self) -> bool {
+                self >= o
+            }
+            #[inline]
+            fn simd_eq(self, o: Self) -> bool {
+                self == o
+            }
+            #[inline]
+            fn is_nan(self) -> bool {
+                $t::is_nan(self)
+            }
+            #[inline]
+            fn is_finite(self) -> bool {
+                $t::is_finite(self)
+            }
+            #[inline]
+            fn select(m: bool, t: Self, f: Self) -> Self {
+                if m { t } else { f }
+            }
+            #[inline]
+            fn min(self, o: Self) -> Self {
+                if self > o { o } else { self }
+            }
+            #[inline]
+            fn max(self, o: Self) -> Self {
+                if self < o { o } else { self }
+            }
+            #[inline]
+            fn mul_add(self, a: Self, b: Self) -> Self {
+                #[cfg(target_feature = "fma")]
+                {
+                    $fma(self, a, b)
+                }
+                #[cfg(not(target_feature = "fma"))]
+                {
+                    self * a + b
+                }
+            }
+            #[inline]
+            fn sqrt(self) -> Self {
+                $sqrt(self)
+            }
+            #[inline]
+            fn recip(self) -> Self {
+                1.0 / self
+            }
+            #[inline]
+            fn abs(self) -> Self {
+                $t::from_bits(self.to_bits() & !(1 << ($bits - 1)))
+            }
+            #[inline]
+            fn copysign(self, sign: Self) -> Self {
+                $copysign(self, sign)
+            }
+            #[inline]
+            fn floor(self) -> Self {
+                $floor(self)
+            }
+            #[inline]
+            fn exp(self) -> Self {
+                $exp(self)
+            }
+            #[inline]
+            fn exp2(self) -> Self {
+                $exp2(self)
+            }
+            #[inline]
+            fn ln(self) -> Self {
+                $ln(self)
+            }
+            #[inline]
+            fn pow(self, e: Self) -> Self {
+                $pow(self, e)
+            }
+            #[inline]
+            fn erf(self) -> Self {
+                $erf(self)
+            }
+            #[inline]
+            fn sin(self) -> Self {
+                $sin(self)
+            }
+            #[inline]
+            fn cos(self) -> Self {
+                $cos(self)
+            }
+            #[inline]
+            fn tan(self) -> Self {
+                $tan(self)
+            }
+            #[inline]
+            fn atan(self) -> Self {
+                $atan(self)
+            }
+            #[inline]
+            fn atan2(self, x: Self) -> Self {
+                $atan2(self, x)
+            }
+            #[inline]
+            fn acos(self) -> Self {
+                $acos(self)
+            }
+            #[inline]
+            fn asin(self) -> Self {
+                $asin(self)
+            }
+        }
+    };
+}
+
+impl_real_scalar!(
+    f32,
+    32,
+    libm::expf,
+    libm::exp2f,
+    libm::logf,
+    libm::powf,
+    libm::erff,
+    libm::sinf,
+    libm::cosf,
+    libm::tanf,
+    libm::atanf,
+    libm::atan2f,
+    libm::acosf,
+    libm::asinf,
+    libm::sqrtf,
+    libm::fmaf,
+    libm::copysignf,
+    libm::floorf
+);
+impl_real_scalar!(
+    f64,
+    64,
+    libm::exp,
+    libm::exp2,
+    libm::log,
+    libm::pow,
+    libm::erf,
+    libm::sin,
+    libm::cos,
+    libm::tan,
+    libm::atan,
+    libm::atan2,
+    libm::acos,
+    libm::asin,
+    libm::sqrt,
+    libm::fma,
+    libm::copysign,
+    libm::floor
+);
+
+macro_rules! impl_real_lanes {
+    ($v:ident, $s:ident, $n:literal, $subnormal_scale_log2:literal) => {
+        impl Real for $v {
+            type Scalar = $s;
+            type Mask = $v;
+            const LANES: usize = $n;
+            const ZERO: Self = $v::splat(0.0);
+            const ONE: Self = $v::splat(1.0);
+            const HALF: Self = $v::splat(0.5);
+            const TWO: Self = $v::splat(2.0);
+            const PI: Self = $v::splat(core::$s::consts::PI);
+            const FRAC_1_PI: Self = $v::splat(core::$s::consts::FRAC_1_PI);
+            const EPSILON: Self = $v::splat($s::EPSILON);
+            const MIN_POSITIVE: Self = $v::splat($s::MIN_POSITIVE);
+            const MAX: Self = $v::splat($s::MAX);
+            const INFINITY: Self = $v::splat($s::INFINITY);
+
+            #[inline]
+            fn splat(v: f64) -> Self {
+                $v::splat(v as $s)
+            }
+            #[inline]
+            fn from_scalar(v: $s) -> Self {
+                $v::splat(v)
+            }
+            #[inline]
+            fn from_fn(f: impl FnMut(usize) -> $s) -> Self {
+                $v::new(core::array::from_fn(f))
+            }
+            #[inline]
+            fn lane(self, i: usize) -> $s {
+                self.to_array()[i]
+            }
+            #[inline]
+            fn simd_lt(self, o: Self) -> Self {
+                $v::simd_lt(self, o)
+            }
+            #[inline]
+            fn simd_le(self, o: Self) -> Self {
+                $v::simd_le(self, o)
+            }
+            #[inline]
+            fn simd_gt(self, o: Self) -> Self {
+                $v::simd_gt(self, o)
+            }
+            #[inline]
+            fn simd_ge(self, o: Self) -> Self {
+                $v::simd_ge(self, o)
+            }
+            #[inline]
+            fn simd_eq(self, o: Self) -> Self {
+                $v::simd_eq(self, o)
+            }
+            #[inline]
+            fn is_nan(self) -> Self {
+                $v::is_nan(self)
+            }
+            #[inline]
+            fn is_finite(self) -> Self {
+                $v::is_finite(self)
+            }
+            #[inline]
+            fn select(m: Self, t: Self, f: Self) -> Self {
+                m.select(t, f)
+            }
+            #[inline]
+            fn min(self, o: Self) -> Self {
+                $v::simd_gt(self, o).select(o, self)
+            }
+            #[inline]
+            fn max(self, o: Self) -> Self {
+                $v::simd_lt(self, o).select(o, self)
+            }
+            #[inline]
+            fn mul_add(self, a: Self, b: Self) -> Self {
+                $v::mul_add(self, a, b)
+            }
+            #[inline]
+            fn sqrt(self) -> Self {
+                $v::sqrt(self)
+            }
+            #[inline]
+            fn recip(self) -> Self {
+                // Not `wide::recip`: on AVX that is the 12-bit `rcpps` estimate.
+                Self::ONE / self
+            }
+            #[inline]
+            fn abs(self) -> Self {
+                $v::abs(self)
+            }
+            #[inline]
+            fn copysign(self, sign: Self) -> Self {
+                let mag = $v::abs(self);
+                sign.is_sign_negative().select(-mag, mag)
+            }
+            #[inline]
+            fn floor(self) -> Self {
+                $v::floor(self)
+            }
+            #[inline]
+            fn exp(self) -> Self {
+                $v::exp(self)
+            }
+            #[inline]
+            fn exp2(self) -> Self {
+                $v::exp2(self)
+            }
+            #[inline]
+            fn ln(self) -> Self {
+                // `wide::ln` treats subnormal input as zero (-inf). Rescale those lanes into
+                // the normal range first and subtract the scale's logarithm.
+                let scale = $v::splat((2.0 as $s).powi($subnormal_scale_log2));
+                let tiny = self.simd_gt(Self::ZERO) & self.simd_lt(Self::MIN_POSITIVE);
+                let x = tiny.select(self * scale, self);
+                let ln_x = $v::ln(x);
+                let correction = $v::splat(($subnormal_scale_log2 as $s) * core::$s::consts::LN_2);
+                tiny.select(ln_x - correction, ln_x)
+            }
+            #[inline]
+            fn pow(self, e: Self) -> Self {
+                {
+                    let (a, b) = (self.to_array(), e.to_array());
+                    $v::new(core::array::from_fn(|i| <$s as Real>::pow(a[i], b[i])))
+                }
+            }
+            #[inline]
+            fn erf(self) -> Self {
+                $v::new(self.to_array().map(<$s as Real>::erf))
+            }
+            #[inline]
+            fn sin(self) -> Self {
+                $v::sin(self)
+            }
+            #[inline]
+            fn cos(self) -> Self {
+                $v::cos(self)
+            }
+            #[inline]
+            fn tan(self) -> Self {
+                $v::new(self.to_array().map(<$s as Real>::tan))
+            }
+            #[inline]
+            fn atan(self) -> Self {
+                $v::atan(self)
+            }
+            #[inline]
+            fn atan2(self, x: Self) -> Self {
+                $v::atan2(self, x)
+            }
+            #[inline]
+            fn acos(self) -> Self {
+                $v::acos(self)
+            }
+            #[inline]
+            fn asin(self) -> Self {
+                $v::asin(self)
+            }
+        }
+    };
+}
+
+impl_real_lanes!(f32x8, f32, 8, 32);
+impl_real_lanes!(f64x4, f64, 4, 64);
