@@ -17,7 +17,11 @@ pub struct ParamError {
 
 impl fmt::Display for ParamError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "invalid parameter `{}`: expected {}", self.param, self.expected)
+        write!(
+            f,
+            "invalid parameter `{}`: expected {}",
+            self.param, self.expected
+        )
     }
 }
 
@@ -28,6 +32,14 @@ impl core::error::Error for ParamError {}
 /// Constructors build `ok` from comparisons, which are false for NaN, so a NaN parameter is
 /// rejected without a separate test.
 #[inline]
-pub fn require<T: Real>(ok: T::Mask, param: &'static str, expected: &'static str) -> Result<(), ParamError> {
-    if ok.all() { Ok(()) } else { Err(ParamError { param, expected }) }
+pub fn require<T: Real>(
+    ok: T::Mask,
+    param: &'static str,
+    expected: &'static str,
+) -> Result<(), ParamError> {
+    if ok.all() {
+        Ok(())
+    } else {
+        Err(ParamError { param, expected })
+    }
 }

@@ -47,9 +47,31 @@
 #![deny(missing_docs)]
 #![forbid(unsafe_code)]
 
+pub mod error;
 pub mod frame;
 pub mod real;
 pub mod vec3;
+
+#[cfg(feature = "beckmann")]
+pub mod beckmann;
+#[cfg(feature = "tonemap")]
+pub mod color;
+#[cfg(feature = "cook-torrance")]
+pub mod cook_torrance;
+#[cfg(feature = "fresnel")]
+pub mod fresnel;
+#[cfg(feature = "ggx")]
+pub mod ggx;
+#[cfg(feature = "integrate")]
+pub mod integrate;
+#[cfg(feature = "microfacet")]
+pub mod microfacet;
+#[cfg(feature = "sampling")]
+pub mod sampling;
+#[cfg(feature = "tonemap")]
+pub mod tonemap;
+
+pub use error::ParamError;
 
 /// The vector math crate whose `Vec3`/`DVec3` convert to [`V3`].
 pub use glam;
