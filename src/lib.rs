@@ -79,3 +79,8 @@ pub use real::{Mask, Real};
 pub use vec3::V3;
 /// The SIMD crate whose `f32x8` and `f64x4` implement [`Real`].
 pub use wide;
+
+/// The README's usage snippet, compiled and run as a doc test.
+#[doc = include_str!("../README.md")]
+#[cfg(doctest)]
+pub struct ReadmeDoctests;
