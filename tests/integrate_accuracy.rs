@@ -1,4 +1,5 @@
 //! The public integrators reach their documented accuracy on integrands with known integrals,
+#![cfg(feature = "integrate")]
 //! and their error estimates do not under-report the actual error.
 
 use brdf::integrate::{
