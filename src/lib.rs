@@ -82,5 +82,5 @@ pub use wide;
 
 /// The README's usage snippet, compiled and run as a doc test.
 #[doc = include_str!("../README.md")]
-#[cfg(doctest)]
+#[cfg(all(doctest, feature = "integrate"))]
 pub struct ReadmeDoctests;

@@ -1,6 +1,6 @@
 //! The public integrators reach their documented accuracy on integrands with known integrals,
-#![cfg(feature = "integrate")]
 //! and their error estimates do not under-report the actual error.
+#![cfg(feature = "integrate")]
 
 use brdf::integrate::{
     Config, Estimate, directional_albedo, hemisphere, ndf_projected_area, reciprocity,
