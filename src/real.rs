@@ -32,7 +32,7 @@
 //! | `atan2` | 3 ULP | 2 ULP | `wide` polynomial |
 //! | `acos` | 1 ULP | 2 ULP | `wide` polynomial |
 //! | `asin` | 2 ULP | 2 ULP | `wide` polynomial |
-//! | `pow`, `erf`, `tan` | 0 ULP | 0 ULP | `libm` per lane |
+//! | `pow`, `erf`, `erfc`, `tan` | 0 ULP | 0 ULP | `libm` per lane |
 //!
 //! Measured over about 2.2 million inputs per type (every 4099th f32 bit pattern, every
 //! (2^43 + 1)th f64 one, the specials and a dense sweep of [-10, 10]):
@@ -207,6 +207,9 @@ pub trait Real:
     fn pow(self, e: Self) -> Self;
     /// The error function. Lanes: `libm` per lane, identical to scalar.
     fn erf(self) -> Self;
+    /// The complementary error function 1 - erf(x), accurate where erf(x) is near 1. Lanes:
+    /// `libm` per lane, identical to scalar.
+    fn erfc(self) -> Self;
     /// Sine. Lanes: within 1 ULP of the scalar path for every input.
     fn sin(self) -> Self;
     /// Cosine. Lanes: within 1 ULP of the scalar path for every input.
@@ -248,7 +251,7 @@ pub trait Real:
 macro_rules! impl_real_scalar {
     ($t:ident, $bits:literal, $exp:path, $exp2:path, $ln:path, $pow:path, $erf:path, $sin:path,
      $cos:path, $tan:path, $atan:path, $atan2:path, $acos:path, $asin:path, $sqrt:path,
-     $fma:path, $copysign:path, $floor:path) => {
+     $fma:path, $copysign:path, $floor:path, $erfc:path) => {
         impl Real for $t {
             type Scalar = $t;
             type Mask = bool;
@@ -372,6 +375,10 @@ macro_rules! impl_real_scalar {
                 $erf(self)
             }
             #[inline]
+            fn erfc(self) -> Self {
+                $erfc(self)
+            }
+            #[inline]
             fn sin(self) -> Self {
                 $sin(self)
             }
@@ -421,7 +428,8 @@ impl_real_scalar!(
     libm::sqrtf,
     libm::fmaf,
     libm::copysignf,
-    libm::floorf
+    libm::floorf,
+    libm::erfcf
 );
 impl_real_scalar!(
     f64,
@@ -441,7 +449,8 @@ impl_real_scalar!(
     libm::sqrt,
     libm::fma,
     libm::copysign,
-    libm::floor
+    libm::floor,
+    libm::erfc
 );
 
 macro_rules! impl_real_lanes {
@@ -577,6 +586,10 @@ macro_rules! impl_real_lanes {
             #[inline]
             fn erf(self) -> Self {
                 $v::new(self.to_array().map(<$s as Real>::erf))
+            }
+            #[inline]
+            fn erfc(self) -> Self {
+                $v::new(self.to_array().map(<$s as Real>::erfc))
             }
             #[inline]
             fn sin(self) -> Self {

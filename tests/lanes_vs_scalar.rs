@@ -180,6 +180,7 @@ unary_bound_test!(exp_within_bound, exp, 1, 2, everywhere);
 unary_bound_test!(exp2_within_bound, exp2, 1, 0, everywhere);
 unary_bound_test!(ln_within_bound, ln, 1, 1, everywhere);
 unary_bound_test!(erf_is_exact, erf, 0, 0, everywhere);
+unary_bound_test!(erfc_is_exact, erfc, 0, 0, everywhere);
 unary_bound_test!(tan_is_exact, tan, 0, 0, everywhere);
 unary_bound_test!(sin_within_bound, sin, 1, 1, everywhere);
 unary_bound_test!(cos_within_bound, cos, 1, 1, everywhere);
