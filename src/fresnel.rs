@@ -42,8 +42,9 @@ fn one_minus_pow5<T: Real>(cos_theta: T) -> T {
 
 /// Schlick's approximation F = F0 + (1 - F0)(1 - c)^5 (Schlick 1994, "An Inexpensive BRDF
 /// Model for Physically-based Rendering", eq. 15). Exact at c = 1 (F0) and c = 0 (1). The
-/// factor is (1 - c)^5, not the (1 - c^5) of one seed note. Approximation: its error against
-/// [`dielectric`] is printed by `tests/fresnel_approximations.rs` and the report.
+/// factor is (1 - c)^5, not the (1 - c^5) of one seed note. Approximation: max abs error
+/// against [`dielectric`] 0.060 for eta = 1.33, 0.036 for 1.5, 0.074 for 2.4, 0.125 for 3, all
+/// near c = 0.1 (`cargo test --test fresnel_approximations -- --nocapture`).
 #[inline]
 #[must_use]
 pub fn schlick<T: Real>(f0: T, v_dot_h: T) -> T {
@@ -78,7 +79,8 @@ pub fn schlick_rgb<T: Real>(f0: V3<T>, v_dot_h: T) -> V3<T> {
 
 /// Schlick with the power replaced by a spherical-Gaussian exp2 fit:
 /// F = F0 + (1 - F0) 2^((-5.55473 c - 6.98316) c) (Karis 2013, "Real Shading in Unreal Engine
-/// 4"). Approximation of [`schlick`]; 1 at c = 0, F0 + (1 - F0) 2^-12.5 at c = 1 (not F0).
+/// 4"). Approximation of [`schlick`], within 0.0037 of it for eta in [1.33, 3]; 1 at c = 0,
+/// F0 + (1 - F0) 2^-12.5 at c = 1 (not exactly F0).
 #[inline]
 #[must_use]
 pub fn schlick_sg<T: Real>(f0: T, v_dot_h: T) -> T {
@@ -293,9 +295,9 @@ pub fn average_dielectric(eta: f64) -> f64 {
 
 /// Fast fit of [`average_dielectric`] (Kulla and Conty 2017, slide "Fresnel average"):
 /// (eta - 1) / (4.08567 + 1.00071 eta) for eta >= 1, and
-/// 0.997118 + 0.1014 eta - 0.965241 eta^2 - 0.130607 eta^3 for eta < 1. Approximation: its
-/// error against the quadrature over eta in [0.5, 3] is printed by
-/// `tests/fresnel_approximations.rs`.
+/// 0.997118 + 0.1014 eta - 0.965241 eta^2 - 0.130607 eta^3 for eta < 1. Approximation: max
+/// abs error 0.0065 against the quadrature over eta in [0.5, 3], at eta = 1.17
+/// (`cargo test --test fresnel_approximations -- --nocapture`).
 #[inline]
 #[must_use]
 pub fn average_dielectric_fit<T: Real>(eta: T) -> T {

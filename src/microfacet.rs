@@ -51,8 +51,9 @@ pub trait Microfacet<T: Real> {
         (T::ONE + self.lambda(wo) + self.lambda(wi)).recip()
     }
 
-    /// Separable masking-shadowing G2 = G1(wo) G1(wi) (Heitz 2014, eq. 98). Never below the
-    /// correlated form, so a BRDF using it reflects slightly more energy.
+    /// Separable masking-shadowing G2 = G1(wo) G1(wi) (Heitz 2014, eq. 98). Never above the
+    /// correlated form, since (1 + Lo)(1 + Li) = 1 + Lo + Li + Lo Li: it counts the shadowing
+    /// of points already masked twice, so a BRDF using it is slightly darker.
     #[inline]
     #[must_use]
     fn g2_separable(&self, wo: V3<T>, wi: V3<T>) -> T {
