@@ -9,6 +9,13 @@
 //! Same conventions as [`crate::ggx`]: free functions of dot products with cosines clamped to
 //! [0, 1], the [`Beckmann`] type on local-frame vectors, alpha floored at
 //! [`ALPHA_MIN`](crate::microfacet::ALPHA_MIN), sin^2 as (1 - c)(1 + c) or x^2 + y^2.
+//!
+//! f32 against f64 on the same inputs (`cargo test --test stability -- --nocapture`): `g1`
+//! within 4 ulps; `d` within 4 + 3 E ulps (E = tan^2 / alpha^2, the exponent: exp turns the
+//! rounding of E into a relative error E times larger) while exp(-E) is a normal f32
+//! (E < 87); `lambda` within 16 + 4 a^4 ulps (a = 1 / (alpha tan), the same conditioning
+//! plus the cancellation of its two terms, which agree to 1 / (4 a^2)). Lambda's error is
+//! large only where Lambda < 1e-7, which G1 = 1 / (1 + Lambda) does not see.
 
 use crate::error::{ParamError, require};
 use crate::microfacet::{Microfacet, floor_alpha};

@@ -11,6 +11,10 @@
 //! explicit: eta = 1 gives exactly 0 at every angle and eta = 1 +- 1e-6 loses no digits to
 //! cancellation (the textbook (c - eta cos_t) / (c + eta cos_t) subtracts two nearly equal
 //! numbers there).
+//!
+//! f32 against f64 on the same inputs (`cargo test --test stability -- --nocapture`):
+//! `dielectric` within 5 ulps for eta > 1 and within 49 for eta < 1, whose worst case sits at
+//! the critical angle (infinite slope); `conductor` within 11; `schlick` within 5.
 
 use crate::real::Real;
 use crate::vec3::V3;

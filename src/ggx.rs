@@ -16,6 +16,11 @@
 //! c >= 1/2) or, on vectors, x^2 + y^2, never 1 - c^2; and D's denominator is
 //! sin^2 + cos^2 alpha^2, a sum of non-negative terms, not 1 + c^2 (alpha^2 - 1), whose
 //! rewrite (1 - c^2) + c^2 alpha^2 by GPU compilers cancels for c near 1.
+//!
+//! f32 against f64 on the same inputs (`cargo test --test stability -- --nocapture`): `d`
+//! within 5 ulps (it squares the error of its denominator), `lambda` 4, `g1` and
+//! `v_correlated` 2, over alpha in [2e-4, 1] and cosines down to 1e-7 and up to the last
+//! 64 floats below 1.
 
 use crate::error::{ParamError, require};
 use crate::microfacet::{Microfacet, floor_alpha};
