@@ -1,1 +1,307 @@
-//! Work in progress: filled in by its own branch before release.
+//! Importance sampling: the cosine-weighted hemisphere, and for GGX and Beckmann the
+//! distribution of normals D(m) cos(theta_m) and the distribution of visible normals
+//! D_wo(m) = G1(wo) max(0, wo.m) D(m) / |wo.z|, each with its pdf.
+//!
+//! Every sampler maps two uniform numbers `u1, u2` in [0, 1) to a unit local-frame direction
+//! and returns it with its pdf (with respect to solid angle), so a caller never pairs a
+//! sampler with the wrong pdf. u = 1 is clamped to the largest float below 1 (where a mapping
+//! would reach an infinite slope). Samplers are generic over [`Real`] and branch-free on lane
+//! values: a lane's output equals the scalar output for that lane's inputs.
+//!
+//! The pdf of the reflected direction wi = reflect(wo, m) is pdf_m / (4 |wo.m|) ([`reflect_pdf`];
+//! Walter et al. 2007, eq. 14).
+
+use crate::real::Real;
+use crate::vec3::V3;
+
+#[cfg(feature = "beckmann")]
+use crate::beckmann::Beckmann;
+#[cfg(feature = "ggx")]
+use crate::ggx::Ggx;
+#[cfg(any(feature = "ggx", feature = "beckmann"))]
+use crate::microfacet::{Microfacet, floor_alpha};
+
+/// Clamps a uniform sample into [0, 1 - epsilon/2]: the largest float below 1 for u >= 1,
+/// so mappings with a pole at u = 1 stay finite. NaN propagates.
+#[inline]
+fn clamp_u<T: Real>(u: T) -> T {
+    u.clamp(T::ZERO, T::ONE - T::EPSILON * T::HALF)
+}
+
+/// A direction on the cosine-weighted upper hemisphere (Malley's method: a uniform point on the
+/// unit disk, r = sqrt(u1), phi = 2 pi u2, lifted to z = sqrt(1 - r^2)), and its pdf
+/// cos(theta) / pi. Source: Pharr, Jakob, Humphreys, "Physically Based Rendering", 4th ed.,
+/// section A.5.3.
+#[inline]
+#[must_use]
+pub fn cosine_hemisphere<T: Real>(u1: T, u2: T) -> (V3<T>, T) {
+    let (u1, u2) = (clamp_u(u1), clamp_u(u2));
+    let r = u1.sqrt();
+    let phi = T::TWO * T::PI * u2;
+    let z = (T::ONE - u1).sqrt_nonneg();
+    let w = V3::new(r * phi.cos(), r * phi.sin(), z);
+    (w, z * T::FRAC_1_PI)
+}
+
+/// pdf of [`cosine_hemisphere`]: max(0, w.z) / pi.
+#[inline]
+#[must_use]
+pub fn cosine_hemisphere_pdf<T: Real>(w: V3<T>) -> T {
+    w.z.max(T::ZERO) * T::FRAC_1_PI
+}
+
+/// pdf of a reflected direction whose half vector m was drawn with pdf `pdf_m`:
+/// pdf_m / (4 |v.h|) (the Jacobian of wi = 2 (wo.m) m - wo; Walter et al. 2007, eq. 14).
+/// 0 where v.h = 0.
+#[inline]
+#[must_use]
+pub fn reflect_pdf<T: Real>(pdf_m: T, v_dot_h: T) -> T {
+    let den = T::splat(4.0) * v_dot_h.abs();
+    T::select(den.simd_gt(T::ZERO), pdf_m / den, T::ZERO)
+}
+
+/// Microfacet normal from a slope (sx, sy) of the unit-roughness distribution, stretched by
+/// (alpha_x, alpha_y): m = normalize(-alpha_x sx, -alpha_y sy, 1) (Heitz 2014, section 5.2:
+/// stretching slopes turns the alpha = 1 distribution into the anisotropic one).
+#[cfg(any(feature = "ggx", feature = "beckmann"))]
+#[inline]
+fn normal_from_slope<T: Real>(sx: T, sy: T, ax: T, ay: T) -> V3<T> {
+    V3::new(-ax * sx, -ay * sy, T::ONE).normalize_or(V3::unit_z())
+}
+
+/// A GGX microfacet normal with pdf D(m) cos(theta_m) (the classic NDF sampling: every normal,
+/// visible or not). Slope radius r = sqrt(u1 / (1 - u1)) of the unit GGX, angle 2 pi u2,
+/// stretched by alpha (Walter et al. 2007 eq. 35-36; anisotropic by Heitz 2014 section 5.2).
+#[cfg(feature = "ggx")]
+#[inline]
+#[must_use]
+pub fn ggx_d_cos<T: Real>(ggx: &Ggx<T>, u1: T, u2: T) -> (V3<T>, T) {
+    let (u1, u2) = (clamp_u(u1), clamp_u(u2));
+    let r = (u1 / (T::ONE - u1)).sqrt();
+    let phi = T::TWO * T::PI * u2;
+    let m = normal_from_slope(
+        r * phi.cos(),
+        r * phi.sin(),
+        floor_alpha(ggx.alpha_x),
+        floor_alpha(ggx.alpha_y),
+    );
+    (m, d_cos_pdf(ggx, m))
+}
+
+/// A Beckmann microfacet normal with pdf D(m) cos(theta_m): slope radius
+/// r = sqrt(-ln(1 - u1)) of the unit Beckmann (a 2D Gaussian of variance 1/2), angle 2 pi u2,
+/// stretched by alpha (Walter et al. 2007 eq. 28-29).
+#[cfg(feature = "beckmann")]
+#[inline]
+#[must_use]
+pub fn beckmann_d_cos<T: Real>(beckmann: &Beckmann<T>, u1: T, u2: T) -> (V3<T>, T) {
+    let (u1, u2) = (clamp_u(u1), clamp_u(u2));
+    let r = (-(T::ONE - u1).ln()).sqrt_nonneg();
+    let phi = T::TWO * T::PI * u2;
+    let m = normal_from_slope(
+        r * phi.cos(),
+        r * phi.sin(),
+        floor_alpha(beckmann.alpha_x),
+        floor_alpha(beckmann.alpha_y),
+    );
+    (m, d_cos_pdf(beckmann, m))
+}
+
+/// pdf D(m) max(0, m.z) of [`ggx_d_cos`] and [`beckmann_d_cos`].
+#[cfg(any(feature = "ggx", feature = "beckmann"))]
+#[inline]
+#[must_use]
+pub fn d_cos_pdf<T: Real, M: Microfacet<T> + ?Sized>(dist: &M, m: V3<T>) -> T {
+    dist.d(m) * m.z.max(T::ZERO)
+}
+
+/// pdf of the visible-normal samplers: D_wo(m) (`Microfacet::d_visible`), with wo mirrored into
+/// the upper hemisphere as the samplers do.
+#[cfg(any(feature = "ggx", feature = "beckmann"))]
+#[inline]
+#[must_use]
+pub fn visible_normal_pdf<T: Real, M: Microfacet<T> + ?Sized>(dist: &M, wo: V3<T>, m: V3<T>) -> T {
+    dist.d_visible(V3::new(wo.x, wo.y, wo.z.abs()), m)
+}
+
+/// `wo` flipped into the upper hemisphere and stretched to the unit-roughness configuration:
+/// normalize(alpha_x wo.x, alpha_y wo.y, |wo.z|).
+#[cfg(any(feature = "ggx", feature = "beckmann"))]
+#[inline]
+fn stretch<T: Real>(wo: V3<T>, ax: T, ay: T) -> V3<T> {
+    V3::new(ax * wo.x, ay * wo.y, wo.z.abs()).normalize_or(V3::unit_z())
+}
+
+/// A GGX visible normal (pdf D_wo(m)) by Heitz 2018, "Sampling the GGX Distribution of Visible
+/// Normals" (JCGT 7(4)): stretch wo to the unit hemisphere configuration, sample the projected
+/// hemisphere seen from it (a disk whose far half is squashed by (1 + v.z) / 2), lift, and
+/// unstretch. wo below the horizon is mirrored (the visible normals of |wo.z|).
+#[cfg(feature = "ggx")]
+#[inline]
+#[must_use]
+pub fn ggx_vndf<T: Real>(ggx: &Ggx<T>, wo: V3<T>, u1: T, u2: T) -> (V3<T>, T) {
+    let (u1, u2) = (clamp_u(u1), clamp_u(u2));
+    let (ax, ay) = (floor_alpha(ggx.alpha_x), floor_alpha(ggx.alpha_y));
+    let vh = stretch(wo, ax, ay);
+    // Orthonormal basis around vh; at vh = +z (normal view) any tangent works.
+    let len2 = vh.x.mul_add(vh.x, vh.y * vh.y);
+    let has_tangent = len2.simd_gt(T::ZERO);
+    let inv_len = T::select(has_tangent, len2.sqrt().recip(), T::ZERO);
+    let t1 = V3::new(
+        T::select(has_tangent, -vh.y * inv_len, T::ONE),
+        vh.x * inv_len,
+        T::ZERO,
+    );
+    let t2 = vh.cross(t1);
+    // Uniform disk point, then the squash of the half the view cannot see.
+    let r = u1.sqrt();
+    let phi = T::TWO * T::PI * u2;
+    let p1 = r * phi.cos();
+    let s = T::HALF * (T::ONE + vh.z);
+    let p2 = (T::ONE - s) * (T::ONE - p1 * p1).sqrt_nonneg() + s * (r * phi.sin());
+    let lift = (T::ONE - p1 * p1 - p2 * p2).sqrt_nonneg();
+    let nh = t1 * p1 + t2 * p2 + vh * lift;
+    let m = V3::new(ax * nh.x, ay * nh.y, nh.z.max(T::ZERO)).normalize_or(V3::unit_z());
+    (m, visible_normal_pdf(ggx, wo, m))
+}
+
+/// A GGX visible normal (pdf D_wo(m)) by the spherical-cap method of Dupuy and Benyoub 2023,
+/// "Sampling Visible GGX Normals with Spherical Caps" (HPG): in the unit configuration the
+/// visible normals are the half vectors between the stretched view and uniform directions on
+/// the spherical cap z >= -v.z; one uniform cap sample, one add, one unstretch. Same
+/// distribution as [`ggx_vndf`], fewer operations and no basis.
+#[cfg(feature = "ggx")]
+#[inline]
+#[must_use]
+pub fn ggx_vndf_spherical_cap<T: Real>(ggx: &Ggx<T>, wo: V3<T>, u1: T, u2: T) -> (V3<T>, T) {
+    let (u1, u2) = (clamp_u(u1), clamp_u(u2));
+    let (ax, ay) = (floor_alpha(ggx.alpha_x), floor_alpha(ggx.alpha_y));
+    let v = stretch(wo, ax, ay);
+    let phi = T::TWO * T::PI * u1;
+    let z = (T::ONE - u2).mul_add(T::ONE + v.z, -v.z);
+    let sin_theta = (T::ONE - z * z).sqrt_nonneg();
+    let c = V3::new(sin_theta * phi.cos(), sin_theta * phi.sin(), z);
+    let h = c + v;
+    let m = V3::new(ax * h.x, ay * h.y, h.z.max(T::ZERO)).normalize_or(V3::unit_z());
+    (m, visible_normal_pdf(ggx, wo, m))
+}
+
+/// 1 / sqrt(pi).
+#[cfg(feature = "beckmann")]
+const FRAC_1_SQRT_PI: f64 = 0.564_189_583_547_756_3;
+
+/// Inverse error function erf^-1(y) for y in (-1, 1): Giles' single-precision polynomial
+/// (Giles 2010, "Approximating the erfinv function", GPU Computing Gems Jade, about 4e-7
+/// relative), polished by two Newton steps on erf(x) - y, which take it to the precision of
+/// `erf` in f64. +-inf at +-1; NaN outside [-1, 1].
+#[cfg(feature = "beckmann")]
+#[inline]
+#[must_use]
+pub fn erf_inv<T: Real>(y: T) -> T {
+    let w = -((T::ONE - y) * (T::ONE + y)).ln();
+    let central = {
+        let w = w - T::splat(2.5);
+        let mut p = T::splat(2.810_226_36e-08);
+        for c in [
+            3.432_739_39e-07,
+            -3.523_387_7e-06,
+            -4.391_506_54e-06,
+            0.000_218_580_87,
+            -0.001_253_725_03,
+            -0.004_177_681_64,
+            0.246_640_727,
+            1.501_409_41,
+        ] {
+            p = p.mul_add(w, T::splat(c));
+        }
+        p
+    };
+    let tail = {
+        let w = w.sqrt_nonneg() - T::splat(3.0);
+        let mut p = T::splat(-0.000_200_214_257);
+        for c in [
+            0.000_100_950_558,
+            0.001_349_343_22,
+            -0.003_673_428_44,
+            0.005_739_507_73,
+            -0.007_622_461_3,
+            0.009_438_870_47,
+            1.001_674_06,
+            2.832_976_82,
+        ] {
+            p = p.mul_add(w, T::splat(c));
+        }
+        p
+    };
+    let mut x = T::select(w.simd_lt(T::splat(5.0)), central, tail) * y;
+    // Newton on f(x) = erf(x) - y, f'(x) = 2 / sqrt(pi) exp(-x^2). Skipped (by select) where
+    // the derivative underflows, i.e. |x| > 9, where the polynomial is already exact to f64.
+    for _ in 0..2 {
+        let deriv = T::TWO * T::splat(FRAC_1_SQRT_PI) * (-x * x).exp();
+        let step = (x.erf() - y) / deriv;
+        x = T::select(deriv.simd_gt(T::ZERO) & step.is_finite(), x - step, x);
+    }
+    let edge = y.abs().simd_eq(T::ONE);
+    T::select(edge, T::INFINITY.copysign(y), x)
+}
+
+/// A Beckmann visible normal (pdf D_wo(m)) by Heitz and d'Eon 2014, "Importance Sampling
+/// Microfacet-Based BSDFs using the Distribution of Visible Normals" (EGSR), with Jakob's
+/// improvements (Mitsuba): in the unit configuration seen from theta, draw the slope x from
+/// its marginal by inverting its CDF, (1 + erf(x) + tan(theta) exp(-x^2) / sqrt(pi)) / norm,
+/// with a fitted initial guess and 8 safeguarded Newton-bisection steps, then y from the
+/// Gaussian y = erf^-1(2 u2 - 1); rotate by the azimuth of wo, stretch by alpha.
+///
+/// Lanes run the same fixed 8 steps (no data-dependent loop), so lanes equal scalars.
+#[cfg(feature = "beckmann")]
+#[must_use]
+pub fn beckmann_vndf<T: Real>(beckmann: &Beckmann<T>, wo: V3<T>, u1: T, u2: T) -> (V3<T>, T) {
+    let (u1, u2) = (clamp_u(u1), clamp_u(u2));
+    let (ax, ay) = (floor_alpha(beckmann.alpha_x), floor_alpha(beckmann.alpha_y));
+    let v = stretch(wo, ax, ay);
+    let cos_t = v.z;
+    let sin_t = v.x.mul_add(v.x, v.y * v.y).sqrt();
+    // Near normal incidence the visible slopes are the plain Gaussian slopes.
+    let near_normal = cos_t.simd_gt(T::splat(0.9999));
+    let tan_t = sin_t / cos_t;
+    let cot_t = cos_t / sin_t;
+    let sqrt_pi_inv = T::splat(FRAC_1_SQRT_PI);
+    // Bracket [a, c] in erf space and the fitted start of Jakob's method.
+    let mut lo = -T::ONE;
+    let mut hi = cot_t.erf();
+    let sample_x = u1.max(T::splat(1e-6));
+    let theta = cos_t.acos();
+    let fit =
+        T::ONE + theta * (T::splat(-0.876) + theta * (T::splat(0.4265) - T::splat(0.0594) * theta));
+    let mut b = hi - (T::ONE + hi) * (T::ONE - sample_x).pow(fit);
+    let norm = (T::ONE + hi + sqrt_pi_inv * tan_t * (-cot_t * cot_t).exp()).recip();
+    for _ in 0..8 {
+        let inside = b.simd_ge(lo) & b.simd_le(hi);
+        b = T::select(inside, b, T::HALF * (lo + hi));
+        let x = erf_inv(b);
+        let value = norm * (T::ONE + b + sqrt_pi_inv * tan_t * (-x * x).exp()) - sample_x;
+        let deriv = norm * (T::ONE - x * tan_t);
+        let above = value.simd_gt(T::ZERO);
+        hi = T::select(above, b, hi);
+        lo = T::select(above, lo, b);
+        let next = b - value / deriv;
+        b = T::select(next.is_finite(), next, b);
+    }
+    let b = b.clamp(lo, hi);
+    let slope_x_view = erf_inv(b);
+    let slope_y_view = erf_inv(T::TWO * u2.max(T::splat(1e-6)) - T::ONE);
+    // Normal incidence: Gaussian slopes of variance 1/2 in polar form.
+    let r = (-(T::ONE - u1).ln()).sqrt_nonneg();
+    let phi = T::TWO * T::PI * u2;
+    let (gx, gy) = (r * phi.cos(), r * phi.sin());
+    let sx = T::select(near_normal, gx, slope_x_view);
+    let sy = T::select(near_normal, gy, slope_y_view);
+    // Rotate from the view's azimuth frame to the tangent frame.
+    let has_azimuth = sin_t.simd_gt(T::ZERO);
+    let cos_p = T::select(has_azimuth, v.x / sin_t, T::ONE);
+    let sin_p = T::select(has_azimuth, v.y / sin_t, T::ZERO);
+    let rx = cos_p * sx - sin_p * sy;
+    let ry = sin_p * sx + cos_p * sy;
+    let m = normal_from_slope(rx, ry, ax, ay);
+    (m, visible_normal_pdf(beckmann, wo, m))
+}
