@@ -84,3 +84,49 @@ pub fn eval_rgb<T: Real, M: Microfacet<T> + ?Sized>(
     let above = wo.z.simd_gt(T::ZERO) & wi.z.simd_gt(T::ZERO);
     fresnel(v_dot_h) * T::select(above, dv, T::ZERO)
 }
+
+/// Dot-product entry point of isotropic GGX Cook-Torrance: f = D(n.h) V(n.v, n.l) F, with
+/// [`crate::ggx::d`] and [`crate::ggx::v_correlated`], F given by the caller (the shader
+/// form: `D_GGX * V_SmithGGXCorrelated * F`). Cosines clamped to [0, 1]; 0 where n.l <= 0 or
+/// n.v <= 0.
+#[cfg(feature = "ggx")]
+#[inline]
+#[must_use]
+pub fn ggx<T: Real>(n_dot_h: T, n_dot_v: T, n_dot_l: T, alpha: T, fresnel: T) -> T {
+    let value =
+        crate::ggx::d(n_dot_h, alpha) * crate::ggx::v_correlated(n_dot_v, n_dot_l, alpha) * fresnel;
+    T::select(
+        n_dot_v.simd_gt(T::ZERO) & n_dot_l.simd_gt(T::ZERO),
+        value,
+        T::ZERO,
+    )
+}
+
+/// Dot-product entry point of isotropic Beckmann Cook-Torrance with the height-correlated
+/// Smith G2 = 1 / (1 + Lambda(v) + Lambda(l)): f = D G2 F / (4 n.l n.v), evaluated as
+/// D F / (4 (n.l n.v + n.l n.v Lambda(v) + n.v n.l Lambda(l))) so that grazing cosines give
+/// 0 instead of 0 / 0. Cosines clamped to [0, 1].
+#[cfg(feature = "beckmann")]
+#[inline]
+#[must_use]
+pub fn beckmann<T: Real>(n_dot_h: T, n_dot_v: T, n_dot_l: T, alpha: T, fresnel: T) -> T {
+    let (cv, cl) = (n_dot_v.saturate(), n_dot_l.saturate());
+    let dist = crate::beckmann::Beckmann {
+        alpha_x: alpha,
+        alpha_y: alpha,
+    };
+    let (wv, wl) = (cosine_direction(cv), cosine_direction(cl));
+    let value = crate::beckmann::d(n_dot_h, alpha) * dist.v_correlated(wv, wl) * fresnel;
+    T::select(
+        n_dot_v.simd_gt(T::ZERO) & n_dot_l.simd_gt(T::ZERO),
+        value,
+        T::ZERO,
+    )
+}
+
+/// A unit direction with cos(theta) = c in the xz plane (isotropic terms depend on c only).
+#[cfg(feature = "beckmann")]
+#[inline]
+fn cosine_direction<T: Real>(c: T) -> V3<T> {
+    V3::new(((T::ONE - c) * (T::ONE + c)).sqrt_nonneg(), T::ZERO, c)
+}

@@ -105,3 +105,38 @@ fn below_the_horizon_is_black() {
     assert_eq!(cook_torrance::dielectric(&g, up, down, 1.5), 0.0);
     assert_eq!(cook_torrance::dielectric(&g, down, up, 1.5), 0.0);
 }
+
+#[test]
+fn dot_product_entry_points_equal_the_vector_ones() {
+    let alpha = 0.35;
+    let (g, b) = (
+        Ggx::isotropic(alpha).unwrap(),
+        Beckmann::isotropic(alpha).unwrap(),
+    );
+    for (to, po, ti, pi) in [
+        (0.3, 0.0, 0.9, 2.0),
+        (1.2, 1.0, 0.4, 4.0),
+        (0.01, 0.0, 1.5, 3.1),
+    ] {
+        let (wo, wi) = (
+            V3::new(
+                f64::sin(to) * f64::cos(po),
+                f64::sin(to) * f64::sin(po),
+                f64::cos(to),
+            ),
+            V3::new(
+                f64::sin(ti) * f64::cos(pi),
+                f64::sin(ti) * f64::sin(pi),
+                f64::cos(ti),
+            ),
+        );
+        let (h, v_dot_h) = cook_torrance::half_vector(wo, wi);
+        let f = brdf::fresnel::schlick(0.04, v_dot_h);
+        let vec_g = cook_torrance::eval(&g, wo, wi, |c| brdf::fresnel::schlick(0.04, c));
+        let dot_g = cook_torrance::ggx(h.z, wo.z, wi.z, alpha, f);
+        let vec_b = cook_torrance::eval(&b, wo, wi, |c| brdf::fresnel::schlick(0.04, c));
+        let dot_b = cook_torrance::beckmann(h.z, wo.z, wi.z, alpha, f);
+        assert!((vec_g - dot_g).abs() <= 1e-12 * vec_g, "{vec_g} vs {dot_g}");
+        assert!((vec_b - dot_b).abs() <= 1e-10 * vec_b, "{vec_b} vs {dot_b}");
+    }
+}
