@@ -4,11 +4,11 @@
 //! scalar and lane paths.
 #![cfg(feature = "tonemap")]
 
+use brdf::V3;
 use brdf::tonemap::{
     self, AgxLook, Exposure, HableParams, LottesParams, MAX_INPUT, Operator, UchimuraParams,
 };
 use brdf::wide::f32x8;
-use brdf::V3;
 use glam::{Vec3, Vec3A};
 
 /// 0, then 40 000 log-spaced points from 1e-6 to 1e6.

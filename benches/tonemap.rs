@@ -1,0 +1,52 @@
+//! Question answered: what does each tonemapping operator cost per pixel, on f32 and on f32x8
+//! lanes? Run: `cargo bench --bench tonemap`. Ratios between rows of one run are the figures
+//! to quote (the machine is shared).
+
+use brdf::tonemap::Operator;
+use brdf::wide::f32x8;
+use brdf::{Real, V3};
+use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};
+use std::hint::black_box;
+
+const N: usize = 4096;
+
+fn bench(c: &mut Criterion) {
+    let px: Vec<V3<f32>> = (0..N)
+        .map(|i| {
+            let t = (i as f32 + 0.5) / N as f32;
+            V3::new(16.0 * t * t, 4.0 * t, 0.5 + 8.0 * ((7.0 * t) % 1.0))
+        })
+        .collect();
+    let lanes: Vec<V3<f32x8>> = px
+        .chunks_exact(8)
+        .map(|ch| {
+            V3::new(
+                f32x8::from_fn(|i| ch[i].x),
+                f32x8::from_fn(|i| ch[i].y),
+                f32x8::from_fn(|i| ch[i].z),
+            )
+        })
+        .collect();
+    let mut g = c.benchmark_group("tonemap");
+    g.throughput(Throughput::Elements(N as u64));
+    for op in Operator::all() {
+        let name = format!("{op:?}")
+            .split('(')
+            .next()
+            .unwrap_or("op")
+            .to_string();
+        g.bench_with_input(BenchmarkId::new("f32", &name), &px, |b, px| {
+            b.iter(|| px.iter().map(|&p| op.apply(black_box(p)).y).sum::<f32>())
+        });
+        g.bench_with_input(BenchmarkId::new("f32x8", &name), &lanes, |b, ls| {
+            b.iter(|| {
+                ls.iter()
+                    .fold(f32x8::ZERO, |acc, &p| acc + op.apply(black_box(p)).y)
+            })
+        });
+    }
+    g.finish();
+}
+
+criterion_group!(benches, bench);
+criterion_main!(benches);
