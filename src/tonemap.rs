@@ -10,7 +10,7 @@
 //! values above [`MAX_INPUT`] (including +inf) -> `MAX_INPUT`; outputs are clamped to [0, 1].
 //! So one NaN or inf pixel becomes black or the operator's white, never a NaN that spreads
 //! through a blur, identically on scalar and lane paths. Each operator's `f(+inf)` is its value
-//! at `MAX_INPUT`: 1 for all of them except AgX (0.9966, its curve's top).
+//! at `MAX_INPUT`: 1 for all of them except AgX (0.9970, its curve's top; the golden look tints it).
 //!
 //! # Channel coupling
 //! Per-channel operators are monotonic in each channel. Operators that use luminance or the
@@ -503,7 +503,7 @@ fn agx_contrast<T: Real>(x: T) -> T {
 /// [`AGX_INSET`], log2 encoding over [-12.47393, 4.026069] EV, the contrast polynomial, the
 /// `look`, [`AGX_OUTSET`], then the 2.2 power the reference uses to return linear values.
 /// Output clamped to [0, 1]; f(0) = 0 (the polynomial's -0.00232 toe is clamped); its top, at
-/// [`MAX_INPUT`] and +inf, is 0.9966.
+/// [`MAX_INPUT`] and +inf, is 0.9970.
 #[inline]
 #[must_use]
 pub fn agx<T: Real>(c: V3<T>, look: &AgxLook) -> V3<T> {
