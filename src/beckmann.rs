@@ -17,8 +17,8 @@
 //! plus the cancellation of its two terms, which agree to 1 / (4 a^2)). Lambda's error is
 //! large only where Lambda < 1e-7, which G1 = 1 / (1 + Lambda) does not see.
 
-use crate::error::{ParamError, require};
-use crate::microfacet::{Microfacet, floor_alpha};
+use crate::error::ParamError;
+use crate::microfacet::{Microfacet, floor_alpha, validate_alphas};
 use crate::real::Real;
 use crate::vec3::V3;
 
@@ -39,17 +39,7 @@ impl<T: Real> Beckmann<T> {
     /// An anisotropic Beckmann. Both alphas must be finite and >= 0 in every lane, else
     /// [`ParamError`]; values below the floor are clamped when evaluated.
     pub fn new(alpha_x: T, alpha_y: T) -> Result<Self, ParamError> {
-        const DOMAIN: &str = "finite and >= 0";
-        require::<T>(
-            alpha_x.simd_ge(T::ZERO) & alpha_x.is_finite(),
-            "alpha_x",
-            DOMAIN,
-        )?;
-        require::<T>(
-            alpha_y.simd_ge(T::ZERO) & alpha_y.is_finite(),
-            "alpha_y",
-            DOMAIN,
-        )?;
+        validate_alphas(alpha_x, alpha_y)?;
         Ok(Self { alpha_x, alpha_y })
     }
 

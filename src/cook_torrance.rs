@@ -28,6 +28,18 @@ pub fn half_vector<T: Real>(wo: V3<T>, wi: V3<T>) -> (V3<T>, T) {
     (h, wo.dot(h).saturate())
 }
 
+/// D(h) V(wo, wi) (0 where either direction is at or below the horizon) and v.h: the part of
+/// the BRDF every Fresnel form multiplies.
+#[inline]
+fn masked_dv<T: Real, M: Microfacet<T> + ?Sized>(m: &M, wo: V3<T>, wi: V3<T>) -> (T, T) {
+    let (h, v_dot_h) = half_vector(wo, wi);
+    let above = wo.z.simd_gt(T::ZERO) & wi.z.simd_gt(T::ZERO);
+    (
+        T::select(above, m.d(h) * m.v_correlated(wo, wi), T::ZERO),
+        v_dot_h,
+    )
+}
+
 /// f = D(h) V(wo, wi) F, with F given by the caller as a function of v.h (any Fresnel form of
 /// [`crate::fresnel`], or a constant). 0 where wo.z <= 0 or wi.z <= 0.
 ///
@@ -41,10 +53,8 @@ pub fn eval<T: Real, M: Microfacet<T> + ?Sized>(
     wi: V3<T>,
     fresnel: impl Fn(T) -> T,
 ) -> T {
-    let (h, v_dot_h) = half_vector(wo, wi);
-    let value = m.d(h) * m.v_correlated(wo, wi) * fresnel(v_dot_h);
-    let above = wo.z.simd_gt(T::ZERO) & wi.z.simd_gt(T::ZERO);
-    T::select(above, value, T::ZERO)
+    let (dv, v_dot_h) = masked_dv(m, wo, wi);
+    dv * fresnel(v_dot_h)
 }
 
 /// Cook-Torrance with the exact dielectric Fresnel term of relative IOR `eta`
@@ -79,10 +89,8 @@ pub fn eval_rgb<T: Real, M: Microfacet<T> + ?Sized>(
     wi: V3<T>,
     fresnel: impl Fn(T) -> V3<T>,
 ) -> V3<T> {
-    let (h, v_dot_h) = half_vector(wo, wi);
-    let dv = m.d(h) * m.v_correlated(wo, wi);
-    let above = wo.z.simd_gt(T::ZERO) & wi.z.simd_gt(T::ZERO);
-    fresnel(v_dot_h) * T::select(above, dv, T::ZERO)
+    let (dv, v_dot_h) = masked_dv(m, wo, wi);
+    fresnel(v_dot_h) * dv
 }
 
 /// Dot-product entry point of isotropic GGX Cook-Torrance: f = D(n.h) V(n.v, n.l) F, with

@@ -22,8 +22,8 @@
 //! `v_correlated` 2, over alpha in [2e-4, 1] and cosines down to 1e-7 and up to the last
 //! 64 floats below 1.
 
-use crate::error::{ParamError, require};
-use crate::microfacet::{Microfacet, floor_alpha};
+use crate::error::ParamError;
+use crate::microfacet::{Microfacet, floor_alpha, validate_alphas};
 use crate::real::Real;
 use crate::vec3::V3;
 
@@ -48,17 +48,7 @@ impl<T: Real> Ggx<T> {
     /// [`ParamError`]; values below [`ALPHA_MIN`](crate::microfacet::ALPHA_MIN) (including 0)
     /// are stored as given and clamped when evaluated.
     pub fn new(alpha_x: T, alpha_y: T) -> Result<Self, ParamError> {
-        const DOMAIN: &str = "finite and >= 0";
-        require::<T>(
-            alpha_x.simd_ge(T::ZERO) & alpha_x.is_finite(),
-            "alpha_x",
-            DOMAIN,
-        )?;
-        require::<T>(
-            alpha_y.simd_ge(T::ZERO) & alpha_y.is_finite(),
-            "alpha_y",
-            DOMAIN,
-        )?;
+        validate_alphas(alpha_x, alpha_y)?;
         Ok(Self { alpha_x, alpha_y })
     }
 

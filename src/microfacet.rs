@@ -6,6 +6,7 @@
 //! are written once here from `d`, `lambda` and `cos_lambda`, so both models share one
 //! height-correlated G2 and one guarded visibility.
 
+use crate::error::{ParamError, require};
 use crate::real::Real;
 use crate::vec3::V3;
 
@@ -87,6 +88,22 @@ pub trait Microfacet<T: Real> {
         let v = T::select(c.simd_gt(T::ZERO), g1_over_cos, T::ZERO);
         v * wo.dot(m).max(T::ZERO) * self.d(m)
     }
+}
+
+/// The constructor check shared by every distribution: both alphas finite and >= 0 in every
+/// lane (comparisons are false for NaN, so NaN is rejected too).
+pub(crate) fn validate_alphas<T: Real>(alpha_x: T, alpha_y: T) -> Result<(), ParamError> {
+    const DOMAIN: &str = "finite and >= 0";
+    require::<T>(
+        alpha_x.simd_ge(T::ZERO) & alpha_x.is_finite(),
+        "alpha_x",
+        DOMAIN,
+    )?;
+    require::<T>(
+        alpha_y.simd_ge(T::ZERO) & alpha_y.is_finite(),
+        "alpha_y",
+        DOMAIN,
+    )
 }
 
 /// `max(alpha, ALPHA_MIN)`; NaN propagates.
