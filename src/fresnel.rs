@@ -81,6 +81,18 @@ pub fn schlick_rgb<T: Real>(f0: V3<T>, v_dot_h: T) -> V3<T> {
     )
 }
 
+/// [`schlick_f90`] for RGB F0 and F90 (x = r, y = g, z = b), sharing the (1 - c)^5 factor.
+#[inline]
+#[must_use]
+pub fn schlick_f90_rgb<T: Real>(f0: V3<T>, f90: V3<T>, v_dot_h: T) -> V3<T> {
+    let w = one_minus_pow5(v_dot_h);
+    V3::new(
+        lerp_exact(f0.x, f90.x, w),
+        lerp_exact(f0.y, f90.y, w),
+        lerp_exact(f0.z, f90.z, w),
+    )
+}
+
 /// Schlick with the power replaced by a spherical-Gaussian exp2 fit:
 /// F = F0 + (1 - F0) 2^((-5.55473 c - 6.98316) c) (Karis 2013, "Real Shading in Unreal Engine
 /// 4"). Approximation of [`schlick`], within 0.0037 of it for eta in [1.33, 3]; 1 at c = 0,

@@ -99,6 +99,24 @@ fn schlick_is_exact_at_normal_and_grazing_incidence() {
 }
 
 #[test]
+fn rgb_forms_equal_their_scalar_channels() {
+    let f0 = brdf::V3::new(0.9, 0.6, 0.2);
+    let f90 = brdf::V3::new(1.0, 0.8, 0.5);
+    for c in cosines() {
+        let rgb = fresnel::schlick_rgb(f0, c);
+        let rgb90 = fresnel::schlick_f90_rgb(f0, f90, c);
+        assert_eq!(
+            [rgb.x, rgb.y, rgb.z],
+            [schlick(0.9, c), schlick(0.6, c), schlick(0.2, c)]
+        );
+        assert_eq!(rgb90.y, fresnel::schlick_f90(0.6, 0.8, c));
+    }
+    // Exact at both ends: F0 at normal incidence, F90 at grazing.
+    assert_eq!(fresnel::schlick_f90_rgb(f0, f90, 0.0), f90);
+    assert_eq!(fresnel::schlick_f90_rgb(f0, f90, 1.0), f0);
+}
+
+#[test]
 fn polarized_reflectances_average_to_the_unpolarized_one_and_vanish_at_brewster() {
     let eta: f64 = 1.5;
     for c in cosines() {
