@@ -48,5 +48,40 @@ fn bench(c: &mut Criterion) {
     g.finish();
 }
 
-criterion_group!(benches, bench);
+/// The refined sRGB pair (per-lane f64, two pows in the OETF) against the single-pow form.
+fn transfer(c: &mut Criterion) {
+    let xs: Vec<f32> = (0..N).map(|i| (i as f32 + 0.5) / N as f32).collect();
+    let ls: Vec<f32x8> = xs
+        .chunks_exact(8)
+        .map(|ch| f32x8::from_fn(|i| ch[i]))
+        .collect();
+    let mut g = c.benchmark_group("srgb");
+    g.throughput(Throughput::Elements(N as u64));
+    type F = fn(f32) -> f32;
+    type L = fn(f32x8) -> f32x8;
+    let cases: [(&str, F, L); 3] = [
+        (
+            "oetf (refined)",
+            brdf::color::srgb_oetf,
+            brdf::color::srgb_oetf,
+        ),
+        (
+            "oetf_fast",
+            brdf::color::srgb_oetf_fast,
+            brdf::color::srgb_oetf_fast,
+        ),
+        ("eotf", brdf::color::srgb_eotf, brdf::color::srgb_eotf),
+    ];
+    for (name, s, l) in cases {
+        g.bench_with_input(BenchmarkId::new("f32", name), &xs, |b, xs| {
+            b.iter(|| xs.iter().map(|&x| s(black_box(x))).sum::<f32>())
+        });
+        g.bench_with_input(BenchmarkId::new("f32x8", name), &ls, |b, ls| {
+            b.iter(|| ls.iter().fold(f32x8::ZERO, |acc, &x| acc + l(black_box(x))))
+        });
+    }
+    g.finish();
+}
+
+criterion_group!(benches, bench, transfer);
 criterion_main!(benches);

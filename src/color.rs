@@ -37,31 +37,27 @@ pub fn mul<T: Real>(m: &Mat3, c: V3<T>) -> V3<T> {
 }
 
 /// sRGB inverse EOTF ("OETF", linear to encoded), piecewise form of IEC 61966-2-1:1999:
-/// 12.92 x for x <= 0.0031308, else 1.055 x^(1/2.4) - 0.055, refined by one Newton step
-/// against [`srgb_eotf`], so that it inverts the implemented EOTF rather than the ideal one.
-/// OETF(EOTF(x)) is within 4 ulps of x over [0, 1] in f32 and f64 (83% exact, 99.4% within
-/// 1 ulp; `cargo test --test color_transfer -- --nocapture`); the rest is the EOTF rounding its
-/// base (x + 0.055) / 1.055 into a coarser binade than x, which a two-word base would remove.
-/// Every 8- and 16-bit code round-trips exactly. The step costs a second `pow`;
-/// [`srgb_oetf_fast`] skips it.
+/// 12.92 x for x <= 0.0031308, else 1.055 x^(1/2.4) - 0.055.
+///
+/// Evaluated per lane in f64 ([`Real::map_f64`]; the `pow` it needs is per lane anyway): one
+/// `pow`, then one Newton step against the two-word [`srgb_eotf`], so that it inverts the EOTF
+/// as implemented, not only the ideal curve. OETF(EOTF(x)) is within 1 ulp of x over [0, 1]
+/// in f32 and f32x8, and within 2 ulps in f64 (410 points in a million, where EOTF(x) sits at
+/// the bottom of its binade and libm's pow rounding shows); every 8- and 16-bit code
+/// round-trips exactly (`cargo test --test color_transfer -- --nocapture`). [`srgb_oetf_fast`] is the plain
+/// single-`pow` form in the input's own precision, for hot paths.
 ///
 /// Domain [0, 1]; negative input and NaN give 0 (so one bad pixel cannot poison an 8-bit
 /// image); above 1 the curve continues (clamp before quantizing).
 #[inline]
 #[must_use]
 pub fn srgb_oetf<T: Real>(x: T) -> T {
-    let x = non_negative(x);
-    let y = srgb_oetf_fast(x);
-    // Newton on EOTF(y) = x: EOTF'(y) = 2.4 EOTF(y) / (y + 0.055) on the power piece.
-    let e = srgb_eotf(y);
-    let step = (e - x) * (y + T::splat(0.055)) / (T::splat(2.4) * e);
-    let refined = T::select(e.simd_gt(T::ZERO) & step.is_finite(), y - step, y);
-    T::select(x.simd_le(T::splat(0.003_130_8)), y, refined)
+    non_negative(x).map_f64(srgb_oetf_f64)
 }
 
-/// [`srgb_oetf`] without the refinement step: one `pow`; its round trip with [`srgb_eotf`] is
-/// within 5 ulps (the rounding of the exponent 1/2.4 and of 1.055 x^(1/2.4) - 0.055 adds to the
-/// EOTF's own).
+/// [`srgb_oetf`] in the input's own precision without the refinement: one `pow`; its round
+/// trip with [`srgb_eotf`] is within 5 ulps in f32 and f64 (the rounding of the exponent 1/2.4
+/// and of 1.055 x^(1/2.4) - 0.055).
 #[inline]
 #[must_use]
 pub fn srgb_oetf_fast<T: Real>(x: T) -> T {
@@ -80,14 +76,49 @@ pub const SRGB_EOTF_BREAK: f64 = 12.92 * 0.003_130_8;
 
 /// sRGB EOTF (encoded to linear), piecewise form of IEC 61966-2-1:1999: x / 12.92 for
 /// x <= [`SRGB_EOTF_BREAK`], else ((x + 0.055) / 1.055)^2.4. Negative and NaN give 0.
-/// See [`srgb_oetf`] for the round-trip accuracy.
+///
+/// Evaluated per lane in f64 with the base (x + 0.055) / 1.055 carried as two words (its
+/// rounding would otherwise cost up to 2.4 ulps: the base lies in a binade up to twice as
+/// coarse as x) and folded back into the power to first order. See [`srgb_oetf`] for the
+/// round-trip accuracy this buys.
 #[inline]
 #[must_use]
 pub fn srgb_eotf<T: Real>(x: T) -> T {
-    let x = non_negative(x);
-    let lin = x / T::splat(12.92);
-    let pow = ((x + T::splat(0.055)) / T::splat(1.055)).pow(T::splat(2.4));
-    T::select(x.simd_le(T::splat(SRGB_EOTF_BREAK)), lin, pow)
+    non_negative(x).map_f64(srgb_eotf_f64)
+}
+
+/// (s, e) with s = fl(a + b) and s + e = a + b exactly (Knuth's TwoSum).
+#[inline]
+fn two_sum(a: f64, b: f64) -> (f64, f64) {
+    let s = a + b;
+    let bb = s - a;
+    (s, (a - (s - bb)) + (b - bb))
+}
+
+fn srgb_eotf_f64(x: f64) -> f64 {
+    if x <= SRGB_EOTF_BREAK {
+        return x / 12.92;
+    }
+    let (s, s_err) = two_sum(x, 0.055);
+    let b = s / 1.055;
+    // The division's exact remainder by a fused multiply-add (libm's `fma` is exact in
+    // software where the target has no FMA instruction), plus the addition's error.
+    let rem = libm::fma(-b, 1.055, s) + s_err;
+    let b_lo = rem / 1.055;
+    let p = libm::pow(b, 2.4);
+    // (b + b_lo)^2.4 = b^2.4 (1 + 2.4 b_lo / b) to first order; b_lo / b < 2^-52.
+    p + p * (2.4 * b_lo / b)
+}
+
+fn srgb_oetf_f64(x: f64) -> f64 {
+    if x <= 0.003_130_8 {
+        return x * 12.92;
+    }
+    let y = 1.055 * libm::pow(x, 1.0 / 2.4) - 0.055;
+    // Newton on EOTF(y) = x: EOTF'(y) = 2.4 EOTF(y) / (y + 0.055) on the power piece.
+    let e = srgb_eotf_f64(y);
+    let step = (e - x) * (y + 0.055) / (2.4 * e);
+    if step.is_finite() { y - step } else { y }
 }
 
 /// Rec.709 OETF (ITU-R BT.709-6, item 1.2): 4.5 L for L < 0.018, else 1.099 L^0.45 - 0.099.

@@ -225,6 +225,11 @@ pub trait Real:
     /// Arc sine, in [-pi/2, pi/2]; NaN outside [-1, 1]. Lanes: within 2 ULP.
     fn asin(self) -> Self;
 
+    /// Applies an f64 function lane by lane (each lane widened to f64, the result rounded back):
+    /// for the few functions whose accuracy needs f64 arithmetic and that are scalar per lane
+    /// anyway (they call `libm::pow`), such as the sRGB transfer pair.
+    fn map_f64(self, f: fn(f64) -> f64) -> Self;
+
     /// `self^n` for a small non-negative integer `n` by repeated squaring: exact-ish and far
     /// cheaper than [`Real::pow`] (Schlick's `(1 - c)^5` uses it).
     #[inline]
@@ -282,6 +287,10 @@ macro_rules! impl_real_scalar {
             #[inline]
             fn lane(self, _i: usize) -> Self {
                 self
+            }
+            #[inline]
+            fn map_f64(self, f: fn(f64) -> f64) -> Self {
+                f(self as f64) as $t
             }
             #[inline]
             fn simd_lt(self, o: Self) -> bool {
@@ -485,6 +494,10 @@ macro_rules! impl_real_lanes {
             #[inline]
             fn lane(self, i: usize) -> $s {
                 self.to_array()[i]
+            }
+            #[inline]
+            fn map_f64(self, f: fn(f64) -> f64) -> Self {
+                $v::new(self.to_array().map(|x| f(x as f64) as $s))
             }
             #[inline]
             fn simd_lt(self, o: Self) -> Self {
