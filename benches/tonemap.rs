@@ -29,12 +29,12 @@ fn bench(c: &mut Criterion) {
         .collect();
     let mut g = c.benchmark_group("tonemap");
     g.throughput(Throughput::Elements(N as u64));
-    for op in Operator::all() {
-        let name = format!("{op:?}")
-            .split('(')
-            .next()
-            .unwrap_or("op")
-            .to_string();
+    for (i, op) in Operator::all().into_iter().enumerate() {
+        // The three AgX looks share a variant name: the index keeps the IDs unique.
+        let name = format!(
+            "{i:02} {}",
+            format!("{op:?}").split('(').next().unwrap_or("op")
+        );
         g.bench_with_input(BenchmarkId::new("f32", &name), &px, |b, px| {
             b.iter(|| px.iter().map(|&p| op.apply(black_box(p)).y).sum::<f32>())
         });
