@@ -475,6 +475,26 @@ impl AgxLook {
         power: [1.35; 3],
         saturation: 1.4,
     };
+    /// A validated look: slopes finite and >= 0, powers finite and > 0, saturation finite and
+    /// >= 0.
+    pub fn new(slope: [f64; 3], power: [f64; 3], saturation: f64) -> Result<Self, ParamError> {
+        for s in slope {
+            require::<f64>(s >= 0.0 && s.is_finite(), "slope", "finite and >= 0")?;
+        }
+        for p in power {
+            require::<f64>(p > 0.0 && p.is_finite(), "power", "finite and > 0")?;
+        }
+        require::<f64>(
+            saturation >= 0.0 && saturation.is_finite(),
+            "saturation",
+            "finite and >= 0",
+        )?;
+        Ok(Self {
+            slope,
+            power,
+            saturation,
+        })
+    }
 }
 
 /// The AgX contrast curve's 6th-order polynomial fit on [0, 1] (Wrensch 2023, "Minimal AgX
@@ -522,11 +542,10 @@ pub fn agx<T: Real>(c: V3<T>, look: &AgxLook) -> V3<T> {
     } else {
         let s = &look.slope;
         let p = &look.power;
-        let g = V3::new(
-            (v.x * T::splat(s[0])).pow(T::splat(p[0])),
-            (v.y * T::splat(s[1])).pow(T::splat(p[1])),
-            (v.z * T::splat(s[2])).pow(T::splat(p[2])),
-        );
+        // The graded value is clamped at 0 before the power, so a look built by hand with a
+        // negative slope darkens to black instead of producing NaN.
+        let grade = |x: T, k: usize| color::non_negative(x * T::splat(s[k])).pow(T::splat(p[k]));
+        let g = V3::new(grade(v.x, 0), grade(v.y, 1), grade(v.z, 2));
         let l = luminance(g);
         let sat = T::splat(look.saturation);
         V3::new(

@@ -308,4 +308,21 @@ fn parameter_constructors_reject_bad_values() {
     assert!(HableParams::new(0.15, 0.5, 0.1, 0.2, 0.02, 0.3, -11.2, 2.0).is_err());
     assert!(LottesParams::new(1.6, 0.977, 0.1, 0.18, 0.267).is_err());
     assert!(LottesParams::new(1.6, 0.977, 8.0, 0.18, 0.267).is_ok());
+    assert!(AgxLook::new([1.0, -0.5, 1.0], [1.0; 3], 1.0).is_err());
+    assert!(AgxLook::new([1.0; 3], [0.0; 3], 1.0).is_err());
+    assert_eq!(
+        AgxLook::new([1.0, 0.9, 0.5], [0.8; 3], 1.3),
+        Ok(AgxLook::GOLDEN)
+    );
+    // A hand-built look with a negative slope stays finite.
+    let odd = AgxLook {
+        slope: [-1.0, 1.0, 1.0],
+        power: [1.5; 3],
+        saturation: 1.0,
+    };
+    let out = tonemap::agx(V3::splat(0.5f64), &odd);
+    assert!(
+        out.x.is_finite() && out.y.is_finite() && out.z.is_finite(),
+        "{out:?}"
+    );
 }
