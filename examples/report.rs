@@ -1,6 +1,7 @@
 //! The main job: prints the crate's report (the integrators on known integrals, the lane paths
 //! against scalar, NDF normalization, Smith's weak furnace, the Cook-Torrance energy loss, the
-//! approximations' errors, the tonemapping operators) and writes its images to `out/`:
+//! approximations' errors, the tonemapping operators, the diffuse lobes' albedo, the Phong
+//! comparison, the metallic-roughness white furnace, the light falloffs) and writes its images to `out/`:
 //!
 //! - `out/spheres.png`: Cook-Torrance GGX spheres, roughness 0.05 to 1, a dielectric (eta 1.5
 //!   over a red Lambertian base) and gold, rendered eight pixels at a time on `f32x8` lanes,
@@ -9,6 +10,9 @@
 //! - `out/tonemap_curves.png`: every tonemapping operator on a grey ramp, log input axis.
 //!
 //! Run: `cargo run --release --example report`.
+
+#[path = "report_sections/lobes.rs"]
+mod lobes;
 
 use brdf::cook_torrance;
 use brdf::frame::Frame;
@@ -71,7 +75,7 @@ fn integrator_checks() {
         r.dot(b).max(0.0).powi(4) / b.z
     });
     println!(
-        "\nreciprocity of classic Phong (1 / n.l factor, seed S4): max relative asymmetry {:.3} over {} pairs",
+        "\nreciprocity of classic Phong (1 / n.l factor): max relative asymmetry {:.3} over {} pairs",
         classic.max_rel, classic.pairs
     );
 }
@@ -452,6 +456,10 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     let loss = energy_loss();
     approximation_errors();
     tonemap_table();
+    lobes::diffuse_albedo()?;
+    lobes::phong_comparison()?;
+    lobes::material_furnace()?;
+    lobes::light_falloffs();
     let out = Path::new("out");
     std::fs::create_dir_all(out)?;
     render_spheres().save(&out.join("spheres.png"))?;

@@ -17,6 +17,10 @@
 //! | `ggx` | GGX / Trowbridge-Reitz, isotropic and anisotropic, real-time V approximations | `ggx` |
 //! | `beckmann` | Beckmann, exact and rational Lambda, Blinn-Phong exponent conversion | `beckmann` |
 //! | `cook_torrance` | D G F / (4 NoL NoV) evaluated through V | `cook-torrance` |
+//! | `diffuse` | Lambert, Oren-Nayar (qualitative, full, Fujii, EON), Burley, diffuse-Fresnel couplings | `diffuse` |
+//! | `phong` | classic, modified and normalized Phong, Blinn-Phong | `phong` |
+//! | `material` | the glTF / Filament metallic-roughness BRDF, its parameters and lobe sampling | `material` |
+//! | `lights` | punctual light radiance, distance attenuation, spot cones | `lights` |
 //! | `sampling` | cosine hemisphere, D cos sampling, visible normals, pdfs | `sampling` |
 //! | `tonemap` | tonemapping operators, exposure | `tonemap` |
 //! | `color` | sRGB / Rec.709 transfer, luminance, colour matrices | `tonemap` |
@@ -58,14 +62,23 @@ pub mod beckmann;
 pub mod color;
 #[cfg(feature = "cook-torrance")]
 pub mod cook_torrance;
+#[cfg(feature = "diffuse")]
+pub mod diffuse;
+mod domain;
 #[cfg(feature = "fresnel")]
 pub mod fresnel;
 #[cfg(feature = "ggx")]
 pub mod ggx;
 #[cfg(feature = "integrate")]
 pub mod integrate;
+#[cfg(feature = "lights")]
+pub mod lights;
+#[cfg(feature = "material")]
+pub mod material;
 #[cfg(feature = "microfacet")]
 pub mod microfacet;
+#[cfg(feature = "phong")]
+pub mod phong;
 #[cfg(feature = "sampling")]
 pub mod sampling;
 #[cfg(feature = "tonemap")]

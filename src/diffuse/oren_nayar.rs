@@ -1,0 +1,513 @@
+//! Oren-Nayar: the qualitative and full models, and Fujii's improved form.
+//!
+//! Oren and Nayar 1994 ("Generalization of Lambert's Reflectance Model", SIGGRAPH) model a
+//! rough diffuse surface as V-shaped cavities whose two facets are Lambertian reflectors of
+//! albedo rho, with facet slope angles theta_a Gaussian-distributed of standard deviation
+//! sigma (radians). The reflected radiance of such a surface, with masking, shadowing and one
+//! interreflection, has no closed form: the paper evaluates it numerically and fits a closed
+//! "full" model to it, and a simpler "qualitative" model that keeps its main trends.
+//!
+//! | function | type | model |
+//! |---|---|---|
+//! | [`oren_nayar`] | [`OrenNayar`] | qualitative model, coefficients [`oren_nayar_a`], [`oren_nayar_b`] |
+//! | [`oren_nayar_full`] | [`OrenNayarFull`] | full model: direct term L1 (C1, C2, C3) plus interreflection L2 |
+//! | [`oren_nayar_fujii`] | [`OrenNayarFujii`] | Fujii 2012's improved qualitative form |
+//!
+//! Notation: theta_o, theta_i are the polar angles of the view direction v and the light
+//! direction l, phi the azimuth between them, alpha = max(theta_i, theta_o),
+//! beta = min(theta_i, theta_o). Every dot-product form here rests on the exact identity
+//!
+//! ```text
+//! s = v.l - (n.v)(n.l) = sin(theta_i) sin(theta_o) cos(phi)
+//! ```
+//!
+//! (expand v and l in the local frame), which is defined at the poles (where phi is not) and
+//! needs no trigonometry.
+//!
+//! # Energy (rho = 1)
+//! Neither of the paper's two closed forms conserves energy. Directional albedo
+//! rho(theta_o) = integral f cos(theta_i) dwi with rho = 1, measured by
+//! `cargo test --no-default-features --features diffuse,integrate --test diffuse_oren_nayar_energy -- --nocapture`:
+//!
+//! | sigma (rad) | qualitative, theta_o = 0 / 60 / 85 / 89.9 deg | full, theta_o = 0 / 60 / 85 / 89.9 deg |
+//! |---|---|---|
+//! | 0.1 | 0.985 / 0.999 / 1.007 / 1.008 | 0.997 / 1.002 / 1.011 / 1.015 |
+//! | 0.2 | 0.946 / 0.987 / 1.011 / 1.015 | 0.986 / 0.999 / 1.027 / 1.040 |
+//! | 0.3 | 0.893 / 0.960 / 0.999 / 1.005 | 0.962 / 0.983 / 1.029 / 1.050 |
+//! | 0.5 | 0.785 / 0.883 / 0.940 / 0.950 | 0.896 / 0.927 / 0.994 / 1.025 |
+//! | 1.0 | 0.624 / 0.747 / 0.818 / 0.830 | 0.775 / 0.813 / 0.897 / 0.936 |
+//! | 1.5 | 0.564 / 0.693 / 0.768 / 0.780 | 0.725 / 0.765 / 0.854 / 0.895 |
+//!
+//! The qualitative model loses up to 44 % of the energy at normal view for large sigma (its
+//! V-cavity surface loses far less: the model drops the interreflection term and the
+//! C3 term), and gains up to 1.5 % at grazing view for sigma near 0.2. The full model with
+//! rho = 1 gains up to 5.0 % (sigma = 0.3, theta_o = 89.9 deg) and loses up to 28 % at
+//! normal view. Fujii's form stays at or below rho everywhere, reaching rho at grazing view
+//! by construction (0.9996 at theta_o = 89.9 deg, sigma = 1).
+
+use super::checked_albedo;
+use crate::domain::{above_horizon, nan_unless};
+use crate::error::{ParamError, require};
+use crate::real::Real;
+use crate::vec3::V3;
+
+/// `sigma` where it is finite and >= 0, NaN elsewhere (and for NaN).
+#[inline]
+fn checked_sigma<T: Real>(sigma: T) -> T {
+    nan_unless(sigma.simd_ge(T::ZERO) & sigma.simd_le(T::MAX), sigma)
+}
+
+/// sigma^2 / (sigma^2 + c) for a checked sigma, with sigma^2 capped at the largest finite
+/// value: without the cap, sigma above sqrt(MAX) gives inf / inf = NaN instead of 1.
+#[inline]
+fn rational<T: Real>(sigma2: T, c: f64) -> T {
+    sigma2 / (sigma2 + T::splat(c))
+}
+
+#[inline]
+fn sigma_squared<T: Real>(sigma: T) -> T {
+    (checked_sigma(sigma) * checked_sigma(sigma)).min(T::MAX)
+}
+
+/// s = v.l - (n.v)(n.l) = sin(theta_i) sin(theta_o) cos(phi), one rounding where the target
+/// has FMA.
+#[inline]
+fn azimuth_term<T: Real>(n_dot_v: T, n_dot_l: T, v_dot_l: T) -> T {
+    (-n_dot_v).mul_add(n_dot_l, v_dot_l)
+}
+
+/// The smallest denominator the lobes divide by: cosines of grazing directions are clamped
+/// up to the smallest normal float, so 1 / cos stays finite (below 1 / MIN_POSITIVE, about
+/// 8.5e37 in f32) instead of overflowing for subnormal cosines.
+#[inline]
+fn guard_denominator<T: Real>(x: T) -> T {
+    x.max(T::MIN_POSITIVE)
+}
+
+/// `value`, or NaN where `probe` is NaN. The horizon guard returns 0 below the horizon
+/// whatever the other inputs are; summing v.l, rho and a sigma coefficient into `probe` keeps
+/// a NaN (or out-of-domain, hence NaN-checked) one of them visible there too.
+#[inline]
+fn nan_from<T: Real>(probe: T, value: T) -> T {
+    T::select(probe.is_nan(), T::splat(f64::NAN), value)
+}
+
+/// The qualitative model's A coefficient, A = 1 - 0.5 sigma^2 / (sigma^2 + 0.33)
+/// (Oren and Nayar 1994, section 4.4; it is also the full model's C1).
+///
+/// Domain: sigma >= 0 and finite (radians); NaN outside. A falls from 1 at sigma = 0 to 0.5 as
+/// sigma grows without bound.
+#[inline]
+#[must_use]
+pub fn oren_nayar_a<T: Real>(sigma: T) -> T {
+    T::ONE - T::HALF * rational(sigma_squared(sigma), 0.33)
+}
+
+/// The qualitative model's B coefficient, B = 0.45 sigma^2 / (sigma^2 + 0.09)
+/// (Oren and Nayar 1994, section 4.4).
+///
+/// Domain: sigma >= 0 and finite (radians); NaN outside. B rises from 0 at sigma = 0 to 0.45
+/// as sigma grows without bound.
+#[inline]
+#[must_use]
+pub fn oren_nayar_b<T: Real>(sigma: T) -> T {
+    T::splat(0.45) * rational(sigma_squared(sigma), 0.09)
+}
+
+#[inline]
+fn qualitative_kernel<T: Real>(n_dot_v: T, n_dot_l: T, v_dot_l: T, rho: T, a: T, b: T) -> T {
+    // cos(phi) sin(alpha) tan(beta) = s / cos(beta) with cos(beta) = max(n.v, n.l): sin(alpha)
+    // sin(beta) = sin(theta_i) sin(theta_o) whichever angle is larger.
+    let s = azimuth_term(n_dot_v, n_dot_l, v_dot_l).max(T::ZERO);
+    let cos_beta = guard_denominator(n_dot_v.max(n_dot_l));
+    let value = rho * T::FRAC_1_PI * b.mul_add(s / cos_beta, a);
+    nan_from(
+        v_dot_l + rho + a + b,
+        above_horizon(n_dot_v, n_dot_l, value),
+    )
+}
+
+/// Oren-Nayar's qualitative model, dot-product form:
+///
+/// ```text
+/// f = rho / pi (A + B max(0, cos(phi)) sin(alpha) tan(beta))
+///   = rho / pi (A + B max(0, s) / max(n.v, n.l)),   s = v.l - (n.v)(n.l)
+/// ```
+///
+/// with A = [`oren_nayar_a`] and B = [`oren_nayar_b`]. The second line is the first rewritten
+/// exactly (s = sin(theta_i) sin(theta_o) cos(phi), cos(beta) = max(n.v, n.l)): no acos, no
+/// trigonometry, and no division by sin(theta) at the poles, where phi is undefined but
+/// s = 0. `tests/diffuse_oren_nayar_reference.rs` checks it against the angle form.
+///
+/// Arguments: cosines `n_dot_v`, `n_dot_l`, `v_dot_l` of unit vectors; albedo `rho` in [0, 1];
+/// `sigma` >= 0 and finite, the standard deviation of the facet slope angle in radians
+/// (sigma = 0 gives Lambert exactly).
+///
+/// Edges: 0 where `n_dot_v <= 0` or `n_dot_l <= 0`; NaN for a NaN input, rho outside [0, 1],
+/// or sigma negative or infinite. Near grazing the term tan(beta) grows as 1 / max(n.v, n.l),
+/// as in the paper; the cosine is clamped at the smallest normal float so the value stays
+/// finite. The model is reciprocal; it does not conserve energy (see the module table).
+///
+/// Source: Oren and Nayar 1994, "Generalization of Lambert's Reflectance Model", SIGGRAPH,
+/// eq. 30 (the qualitative model); the same form as pbrt-v3/v4's `OrenNayar`.
+#[inline]
+#[must_use]
+pub fn oren_nayar<T: Real>(n_dot_v: T, n_dot_l: T, v_dot_l: T, rho: T, sigma: T) -> T {
+    qualitative_kernel(
+        n_dot_v,
+        n_dot_l,
+        v_dot_l,
+        checked_albedo(rho),
+        oren_nayar_a(sigma),
+        oren_nayar_b(sigma),
+    )
+}
+
+/// Oren-Nayar's qualitative model ([`oren_nayar`]) with validated parameters and its A and B
+/// coefficients precomputed.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct OrenNayar<T> {
+    rho: T,
+    sigma: T,
+    a: T,
+    b: T,
+}
+
+/// Validates rho in [0, 1] and sigma finite and >= 0 in every lane.
+fn require_rho_sigma<T: Real>(rho: T, sigma: T) -> Result<(), ParamError> {
+    require::<T>(
+        rho.simd_ge(T::ZERO) & rho.simd_le(T::ONE),
+        "rho",
+        "in [0, 1]",
+    )?;
+    require::<T>(
+        sigma.simd_ge(T::ZERO) & sigma.simd_le(T::MAX),
+        "sigma",
+        "finite and >= 0",
+    )
+}
+
+impl<T: Real> OrenNayar<T> {
+    /// The qualitative lobe of albedo rho in [0, 1] and slope-angle standard deviation sigma
+    /// (radians, finite, >= 0); [`ParamError`] otherwise.
+    pub fn new(rho: T, sigma: T) -> Result<Self, ParamError> {
+        require_rho_sigma(rho, sigma)?;
+        Ok(Self {
+            rho,
+            sigma,
+            a: oren_nayar_a(sigma),
+            b: oren_nayar_b(sigma),
+        })
+    }
+
+    /// The albedo rho.
+    #[inline]
+    #[must_use]
+    pub fn rho(&self) -> T {
+        self.rho
+    }
+
+    /// The slope-angle standard deviation sigma, in radians.
+    #[inline]
+    #[must_use]
+    pub fn sigma(&self) -> T {
+        self.sigma
+    }
+
+    /// f(wo, wi) for local-frame unit vectors pointing away from the surface ([`oren_nayar`]
+    /// with n.v = wo.z, n.l = wi.z, v.l = wo . wi; the same bits).
+    #[inline]
+    #[must_use]
+    pub fn eval(&self, wo: V3<T>, wi: V3<T>) -> T {
+        qualitative_kernel(wo.z, wi.z, wo.dot(wi), self.rho, self.a, self.b)
+    }
+}
+
+/// The full model's sigma-dependent factors.
+#[derive(Clone, Copy, Debug, PartialEq)]
+struct FullCoefficients<T> {
+    /// C1 = 1 - 0.5 sigma^2 / (sigma^2 + 0.33).
+    c1: T,
+    /// 0.45 sigma^2 / (sigma^2 + 0.09), the factor of C2.
+    c2: T,
+    /// 0.125 sigma^2 / (sigma^2 + 0.09), the factor of C3.
+    c3: T,
+    /// 0.17 sigma^2 / (sigma^2 + 0.13), the factor of L2.
+    l2: T,
+}
+
+impl<T: Real> FullCoefficients<T> {
+    #[inline]
+    fn new(sigma: T) -> Self {
+        let s2 = sigma_squared(sigma);
+        let k = rational(s2, 0.09);
+        Self {
+            c1: T::ONE - T::HALF * rational(s2, 0.33),
+            c2: T::splat(0.45) * k,
+            c3: T::splat(0.125) * k,
+            l2: T::splat(0.17) * rational(s2, 0.13),
+        }
+    }
+}
+
+#[inline]
+fn full_kernel<T: Real>(n_dot_v: T, n_dot_l: T, v_dot_l: T, rho: T, k: FullCoefficients<T>) -> T {
+    let two_over_pi = T::TWO * T::FRAC_1_PI;
+    // Cosines slightly above 1 (rounding in the caller's dot products) would make acos NaN.
+    let (cv, cl) = (n_dot_v.min(T::ONE), n_dot_l.min(T::ONE));
+    let sin_v = ((T::ONE - cv) * (T::ONE + cv)).sqrt_nonneg();
+    let sin_l = ((T::ONE - cl) * (T::ONE + cl)).sqrt_nonneg();
+    // alpha is the larger polar angle (smaller cosine), beta the smaller; sin is monotonic
+    // on [0, pi/2], so the sines sort the same way.
+    let (cos_alpha, cos_beta) = (cv.min(cl), cv.max(cl));
+    let (sin_alpha, sin_beta) = (sin_v.max(sin_l), sin_v.min(sin_l));
+    let (alpha, beta) = (cos_alpha.acos(), cos_beta.acos());
+    // cos(phi) = s / (sin(theta_i) sin(theta_o)). At a pole phi is undefined, but beta = 0
+    // there and every term that cos(phi) multiplies vanishes with beta, so 0 is as good as
+    // any value (s * 0 keeps a NaN v.l visible). Rounding can push the ratio past +-1 near
+    // the poles: the clamp keeps (1 - |cos(phi)|) >= 0.
+    let s = azimuth_term(n_dot_v, n_dot_l, v_dot_l);
+    let sin_product = sin_v * sin_l;
+    let cos_phi = T::select(sin_product.simd_gt(T::ZERO), s / sin_product, s * T::ZERO)
+        .clamp(-T::ONE, T::ONE);
+    let tan_beta = sin_beta / guard_denominator(cos_beta);
+    // tan((alpha + beta) / 2) by the half-angle identity (sin a + sin b) / (cos a + cos b).
+    let tan_half = (sin_alpha + sin_beta) / guard_denominator(cos_alpha + cos_beta);
+    let b = beta * two_over_pi;
+    // C2: sin(alpha) where cos(phi) >= 0, sin(alpha) - (2 beta / pi)^3 where cos(phi) < 0.
+    let c2 = k.c2 * T::select(cos_phi.simd_ge(T::ZERO), sin_alpha, sin_alpha - b * b * b);
+    let ab = T::splat(4.0) * T::FRAC_1_PI * T::FRAC_1_PI * alpha * beta;
+    let c3 = k.c3 * ab * ab;
+    let l1 = k.c1 + cos_phi * c2 * tan_beta + (T::ONE - cos_phi.abs()) * c3 * tan_half;
+    // The fit goes negative for sigma above about 0.65 with both directions near grazing on
+    // opposite sides (cos(phi) < 0: sin(alpha) - (2 beta / pi)^3 -> 6 eps / pi while
+    // tan(beta) -> 1 / eps); the surface it approximates reflects nothing negative.
+    let l1 = l1.max(T::ZERO);
+    let l2 = rho * k.l2 * (T::ONE - cos_phi * b * b);
+    let value = rho * T::FRAC_1_PI * (l1 + l2);
+    nan_from(v_dot_l + rho + k.c1, above_horizon(n_dot_v, n_dot_l, value))
+}
+
+/// Oren-Nayar's full model: the direct term L1 with the C1, C2, C3 coefficients plus the
+/// interreflection term L2,
+///
+/// ```text
+/// f  = rho / pi (max(0, L1) + L2)
+/// L1 = C1 + cos(phi) C2 tan(beta) + (1 - |cos(phi)|) C3 tan((alpha + beta) / 2)
+/// L2 = 0.17 rho sigma^2 / (sigma^2 + 0.13) (1 - cos(phi) (2 beta / pi)^2)
+/// C1 = 1 - 0.5 sigma^2 / (sigma^2 + 0.33)
+/// C2 = 0.45 sigma^2 / (sigma^2 + 0.09) sin(alpha)                     if cos(phi) >= 0
+///      0.45 sigma^2 / (sigma^2 + 0.09) (sin(alpha) - (2 beta / pi)^3)  otherwise
+/// C3 = 0.125 sigma^2 / (sigma^2 + 0.09) (4 alpha beta / pi^2)^2
+/// ```
+///
+/// with cos(phi) = s / (sin(theta_i) sin(theta_o)), s = v.l - (n.v)(n.l), and alpha, beta
+/// from acos of the cosines (C3 and the (2 beta / pi) factors need the angles themselves).
+///
+/// Conventions, where reproductions differ: sigma is in radians (the paper's constants
+/// 0.33, 0.09, 0.13 are rad^2; some shader ports pass degrees or a [0, 1] "roughness"); the
+/// C2 branch is on cos(phi) >= 0 (Mitsuba 0.5's `roughdiffuse` uses > 0; the two agree
+/// because that term is multiplied by cos(phi)); L2 carries the factor rho, so f is quadratic
+/// in rho (two facet bounces each scale by rho: the paper's rho^2 / pi, as in Mitsuba 0.5;
+/// ports that drop it make L2 independent of albedo); (2 beta / pi) is squared in L2 and
+/// cubed in C2, as in the paper. Mitsuba scales its `alpha` by 1/sqrt(2) to get sigma; this
+/// function takes sigma directly. pbrt-v3/v4 implement only the qualitative model.
+///
+/// Deviation from the paper: L1 is clamped at 0. The paper's fit of L1 goes negative for
+/// sigma above about 0.65 rad with both directions near grazing and cos(phi) < 0
+/// (sin(alpha) - (2 beta / pi)^3 tends to 6 eps / pi while tan(beta) tends to 1 / eps, so
+/// L1 tends to C1 - 0.86 sigma^2 / (sigma^2 + 0.09)); the clamp keeps f >= 0 there and
+/// changes nothing elsewhere.
+///
+/// Arguments and edges as [`oren_nayar`]: rho in [0, 1], sigma >= 0 and finite (radians);
+/// 0 below the horizon, NaN for NaN or out-of-domain input. Near grazing tan(beta) and
+/// tan((alpha + beta) / 2) grow without bound as in the paper; their denominators are clamped
+/// at the smallest normal float, so the value stays finite. With sigma = 0 it is Lambert
+/// exactly. At phi = 0 it equals the qualitative model plus L2 exactly. The model is
+/// reciprocal; it gains energy at grazing view for rho = 1 (see the module table).
+///
+/// Source: Oren and Nayar 1994, "Generalization of Lambert's Reflectance Model", SIGGRAPH,
+/// section 4 (the functional approximation of L1 and the interreflection term L2).
+#[inline]
+#[must_use]
+pub fn oren_nayar_full<T: Real>(n_dot_v: T, n_dot_l: T, v_dot_l: T, rho: T, sigma: T) -> T {
+    full_kernel(
+        n_dot_v,
+        n_dot_l,
+        v_dot_l,
+        checked_albedo(rho),
+        FullCoefficients::new(sigma),
+    )
+}
+
+/// Oren-Nayar's full model ([`oren_nayar_full`]) with validated parameters and its sigma
+/// factors precomputed.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct OrenNayarFull<T> {
+    rho: T,
+    sigma: T,
+    k: FullCoefficients<T>,
+}
+
+impl<T: Real> OrenNayarFull<T> {
+    /// The full lobe of albedo rho in [0, 1] and slope-angle standard deviation sigma
+    /// (radians, finite, >= 0); [`ParamError`] otherwise.
+    pub fn new(rho: T, sigma: T) -> Result<Self, ParamError> {
+        require_rho_sigma(rho, sigma)?;
+        Ok(Self {
+            rho,
+            sigma,
+            k: FullCoefficients::new(sigma),
+        })
+    }
+
+    /// The albedo rho.
+    #[inline]
+    #[must_use]
+    pub fn rho(&self) -> T {
+        self.rho
+    }
+
+    /// The slope-angle standard deviation sigma, in radians.
+    #[inline]
+    #[must_use]
+    pub fn sigma(&self) -> T {
+        self.sigma
+    }
+
+    /// f(wo, wi) for local-frame unit vectors pointing away from the surface
+    /// ([`oren_nayar_full`] with n.v = wo.z, n.l = wi.z, v.l = wo . wi; the same bits).
+    #[inline]
+    #[must_use]
+    pub fn eval(&self, wo: V3<T>, wi: V3<T>) -> T {
+        full_kernel(wo.z, wi.z, wo.dot(wi), self.rho, self.k)
+    }
+}
+
+/// Fujii's A coefficient in the pi-factored form, A = 1 / (1 + (1/2 - 2 / (3 pi)) sigma),
+/// so that f = rho / pi (A + sigma A s / t) (see [`oren_nayar_fujii`]).
+#[inline]
+fn fujii_a<T: Real>(sigma: T) -> T {
+    // 1/2 - 2 / (3 pi): the grazing-view albedo of the s / t term is (pi/2 - 2/3), divided
+    // by pi.
+    const K: f64 = 0.5 - 2.0 / (3.0 * core::f64::consts::PI);
+    T::ONE / T::splat(K).mul_add(sigma, T::ONE)
+}
+
+/// `sigma` where it lies in [0, 1], NaN elsewhere.
+#[inline]
+fn checked_fujii_sigma<T: Real>(sigma: T) -> T {
+    nan_unless(sigma.simd_ge(T::ZERO) & sigma.simd_le(T::ONE), sigma)
+}
+
+#[inline]
+fn fujii_kernel<T: Real>(n_dot_v: T, n_dot_l: T, v_dot_l: T, rho: T, a: T, b: T) -> T {
+    let s = azimuth_term(n_dot_v, n_dot_l, v_dot_l);
+    let t = T::select(
+        s.simd_gt(T::ZERO),
+        guard_denominator(n_dot_v.max(n_dot_l)),
+        T::ONE,
+    );
+    // A + B s / t >= A (1 - sigma) >= 0 for consistent cosines; the max only catches
+    // rounding of s below -1 and inconsistent caller cosines.
+    let value = rho * T::FRAC_1_PI * b.mul_add(s / t, a).max(T::ZERO);
+    nan_from(
+        v_dot_l + rho + a + b,
+        above_horizon(n_dot_v, n_dot_l, value),
+    )
+}
+
+/// Fujii's improved Oren-Nayar ("FON"), dot-product form:
+///
+/// ```text
+/// f = rho / pi (A + B s / t),   s = v.l - (n.v)(n.l),
+///     t = 1 where s <= 0, max(n.v, n.l) where s > 0,
+///     A = 1 / (1 + (1/2 - 2 / (3 pi)) sigma),   B = sigma A
+/// ```
+///
+/// Fujii writes f = rho (A' + B' s / t) with A' = 1 / (pi + (pi/2 - 2/3) sigma), B' = sigma A';
+/// that is the same function (A' = A / pi), and the form above is the one OpenPBR and the EON
+/// paper (Portsmouth, Kutz and Hill 2024) use. Against [`oren_nayar`] it keeps the s / t
+/// term for s < 0 (qualitative Oren-Nayar drops it, falling back to Lambert for forward
+/// scattering, which shows as dark rings on spheres) and normalizes so the directional albedo
+/// at grazing view (n.v -> 0, where the s / t term is largest) is exactly rho: with rho <= 1
+/// the albedo never exceeds 1 (checked by `tests/diffuse_oren_nayar_energy.rs`).
+///
+/// `sigma` is Fujii's sigma', the ratio B / A of the non-Lambertian to the Lambertian term,
+/// in [0, 1] as his note defines it; it is not the slope-angle deviation of [`oren_nayar`].
+/// For a qualitative-model sigma_ON the matching ratio is
+/// [`oren_nayar_b`] / [`oren_nayar_a`] = 0.45 sigma_ON^2 / (sigma_ON^2 + 0.09) /
+/// (1 - 0.5 sigma_ON^2 / (sigma_ON^2 + 0.33)), which stays below 0.9 for every sigma_ON.
+/// Above sigma = 1 the value A (1 + sigma s) goes negative for grazing opposite directions,
+/// hence the bound.
+///
+/// Domain: rho in [0, 1], sigma in [0, 1]; NaN outside or for NaN input; 0 below the horizon.
+/// sigma = 0 is Lambert exactly. Near grazing s / t grows as 1 / max(n.v, n.l); t is clamped
+/// at the smallest normal float so the value stays finite.
+///
+/// Source: Fujii 2012, "A tiny improvement of Oren-Nayar reflectance model" (web note,
+/// mimosa-pudica.net); OpenPBR 1.1 and Portsmouth, Kutz and Hill 2024, "EON: A practical
+/// energy-preserving rough diffuse BRDF", for the pi-factored form.
+#[inline]
+#[must_use]
+pub fn oren_nayar_fujii<T: Real>(n_dot_v: T, n_dot_l: T, v_dot_l: T, rho: T, sigma: T) -> T {
+    let sigma = checked_fujii_sigma(sigma);
+    let a = fujii_a(sigma);
+    fujii_kernel(n_dot_v, n_dot_l, v_dot_l, checked_albedo(rho), a, sigma * a)
+}
+
+/// Fujii's improved Oren-Nayar ([`oren_nayar_fujii`]) with validated parameters and its
+/// coefficients precomputed.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct OrenNayarFujii<T> {
+    rho: T,
+    sigma: T,
+    a: T,
+    b: T,
+}
+
+impl<T: Real> OrenNayarFujii<T> {
+    /// Fujii's lobe of albedo rho in [0, 1] and roughness sigma in [0, 1] (his sigma', the
+    /// ratio B / A); [`ParamError`] otherwise.
+    pub fn new(rho: T, sigma: T) -> Result<Self, ParamError> {
+        require::<T>(
+            rho.simd_ge(T::ZERO) & rho.simd_le(T::ONE),
+            "rho",
+            "in [0, 1]",
+        )?;
+        require::<T>(
+            sigma.simd_ge(T::ZERO) & sigma.simd_le(T::ONE),
+            "sigma",
+            "in [0, 1]",
+        )?;
+        let a = fujii_a(sigma);
+        Ok(Self {
+            rho,
+            sigma,
+            a,
+            b: sigma * a,
+        })
+    }
+
+    /// The albedo rho.
+    #[inline]
+    #[must_use]
+    pub fn rho(&self) -> T {
+        self.rho
+    }
+
+    /// The roughness sigma in [0, 1].
+    #[inline]
+    #[must_use]
+    pub fn sigma(&self) -> T {
+        self.sigma
+    }
+
+    /// f(wo, wi) for local-frame unit vectors pointing away from the surface
+    /// ([`oren_nayar_fujii`] with n.v = wo.z, n.l = wi.z, v.l = wo . wi; the same bits).
+    #[inline]
+    #[must_use]
+    pub fn eval(&self, wo: V3<T>, wi: V3<T>) -> T {
+        fujii_kernel(wo.z, wi.z, wo.dot(wi), self.rho, self.a, self.b)
+    }
+}

@@ -1,0 +1,36 @@
+//! The crate's rule for bad input, as two guards every kernel can share.
+//!
+//! - A NaN in any input gives NaN out, never a plausible finite value.
+//! - A parameter outside its documented domain, reaching a function that does not validate it,
+//!   gives NaN.
+//! - A finite direction below the horizon gives 0 (reflection only).
+
+use crate::real::Real;
+
+/// `value` where `ok` holds, NaN elsewhere.
+///
+/// Build `ok` from comparisons (`simd_ge`, `simd_le`, ...), which are false for NaN, so a NaN
+/// parameter fails the check without a separate test.
+#[cfg_attr(
+    not(any(feature = "diffuse", feature = "phong", feature = "lights")),
+    allow(dead_code)
+)]
+#[inline]
+#[must_use]
+pub(crate) fn nan_unless<T: Real>(ok: T::Mask, value: T) -> T {
+    T::select(ok, value, T::splat(f64::NAN))
+}
+
+/// `value` where both cosines are > 0; NaN where either is NaN; 0 elsewhere (a direction at or
+/// below the horizon reflects nothing).
+///
+/// Without the NaN case a guard written `select(c > 0, value, 0)` turns a NaN cosine into a
+/// plausible 0.
+#[cfg_attr(not(any(feature = "diffuse", feature = "phong")), allow(dead_code))]
+#[inline]
+#[must_use]
+pub(crate) fn above_horizon<T: Real>(n_dot_v: T, n_dot_l: T, value: T) -> T {
+    let above = n_dot_v.simd_gt(T::ZERO) & n_dot_l.simd_gt(T::ZERO);
+    let nan = n_dot_v.is_nan() | n_dot_l.is_nan();
+    T::select(above, value, T::select(nan, T::splat(f64::NAN), T::ZERO))
+}
