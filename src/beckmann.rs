@@ -6,7 +6,7 @@
 //! Rough Surfaces" (EGSR), eqs. 25-27; Heitz 2014, "Understanding the Masking-Shadowing Function
 //! in Microfacet-Based BRDFs" (JCGT 3(2)), eqs. 80-83.
 //!
-//! Same conventions as [`crate::ggx`]: free functions of dot products with cosines clamped to
+//! Same conventions as the `ggx` module: free functions of dot products with cosines clamped to
 //! [0, 1], the [`Beckmann`] type on local-frame vectors, alpha floored at
 //! [`ALPHA_MIN`](crate::microfacet::ALPHA_MIN), sin^2 as (1 - c)(1 + c) or x^2 + y^2.
 //!

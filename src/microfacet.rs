@@ -2,7 +2,7 @@
 //! `TrowbridgeReitzDistribution`): D, Lambda, G1, the two G2 forms, the visibility V and the
 //! distribution of visible normals, all on local-frame vectors (normal = +z).
 //!
-//! Implemented by [`crate::ggx::Ggx`] and [`crate::beckmann::Beckmann`]. The provided methods
+//! Implemented by `ggx::Ggx` and `beckmann::Beckmann` (each behind its feature). The provided methods
 //! are written once here from `d`, `lambda` and `cos_lambda`, so both models share one
 //! height-correlated G2 and one guarded visibility.
 

@@ -107,7 +107,7 @@ pub fn beckmann_d_cos<T: Real>(beckmann: &Beckmann<T>, u1: T, u2: T) -> (V3<T>, 
     (m, d_cos_pdf(beckmann, m))
 }
 
-/// pdf D(m) max(0, m.z) of [`ggx_d_cos`] and [`beckmann_d_cos`].
+/// pdf D(m) max(0, m.z) of `ggx_d_cos` and `beckmann_d_cos` (each behind its feature).
 #[cfg(any(feature = "ggx", feature = "beckmann"))]
 #[inline]
 #[must_use]
