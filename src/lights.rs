@@ -47,15 +47,20 @@ fn nan_of<T: Real>(x: T) -> T {
 /// a surface facing the light (for a point light, I / d^2 times an attenuation window).
 ///
 /// Domain: f >= 0 and e_perp >= 0, both finite; n.l in [-1, 1]. n.l <= 0 (light behind the
-/// surface) gives 0; NaN in any input, or a negative f or e_perp, gives NaN.
+/// surface) gives 0; NaN in any input, or an input outside its domain, gives NaN. A product
+/// too large for the float type is capped at the largest finite value instead of +inf.
 ///
 /// Source: the reflectance equation with a delta light (Pharr, Jakob, Humphreys, "Physically
 /// Based Rendering", 4th ed., section 12.1).
 #[inline]
 #[must_use]
 pub fn radiance<T: Real>(f: T, e_perp: T, n_dot_l: T) -> T {
-    let ok = f.simd_ge(T::ZERO) & e_perp.simd_ge(T::ZERO);
-    let lit = f * e_perp * n_dot_l;
+    let finite_non_negative = |x: T| x.simd_ge(T::ZERO) & x.is_finite();
+    let ok = finite_non_negative(f)
+        & finite_non_negative(e_perp)
+        & n_dot_l.simd_ge(-T::ONE)
+        & n_dot_l.simd_le(T::ONE);
+    let lit = (f * e_perp * n_dot_l).min(T::MAX);
     nan_unless(
         ok,
         T::select(n_dot_l.simd_gt(T::ZERO), lit, nan_of(n_dot_l)),
@@ -203,17 +208,21 @@ pub fn polynomial<T: Real>(distance: T, constant: T, linear: T, quadratic: T) ->
 /// cos_outer)), where a is the angle between the spot's axis and the direction from the light
 /// to the point. 1 inside the inner cone, 0 outside the outer one, a smooth ramp between.
 ///
-/// Domain: cosines in [-1, 1] with cos_outer <= cos_inner (NaN otherwise). Edge: cos_inner =
-/// cos_outer is a hard-edged cone: 1 for cos a >= cos_outer, 0 below (instead of 0 / 0).
+/// Domain: all three cosines in [-1, 1] with cos_outer <= cos_inner (NaN otherwise). Edge:
+/// cos_inner = cos_outer is a hard-edged cone: 1 for cos a >= cos_outer, 0 below (instead of
+/// 0 / 0).
 ///
-/// Source: Google Filament, "Physically Based Rendering in Filament", section 5.2.2.3 (spot
-/// light attenuation, squared for a smoother edge); Karis 2013, "Real Shading in Unreal
-/// Engine 4".
+/// Source: Lagarde and de Rousiers 2014, "Moving Frostbite to Physically Based Rendering 3.0",
+/// SIGGRAPH course (`getAngleAtt`: the linear ramp in cos a, squared for a smoother edge);
+/// Google Filament, "Physically Based Rendering in Filament" (spot light attenuation).
 #[inline]
 #[must_use]
 pub fn spot_cone<T: Real>(cos_angle: T, cos_outer: T, cos_inner: T) -> T {
     let in_range = |c: T| c.simd_ge(-T::ONE) & c.simd_le(T::ONE);
-    let ok = in_range(cos_outer) & in_range(cos_inner) & cos_outer.simd_le(cos_inner);
+    let ok = in_range(cos_angle)
+        & in_range(cos_outer)
+        & in_range(cos_inner)
+        & cos_outer.simd_le(cos_inner);
     let width = cos_inner - cos_outer;
     let hard = width.simd_eq(T::ZERO);
     let t = ((cos_angle - cos_outer) / T::select(hard, T::ONE, width)).saturate();

@@ -30,6 +30,13 @@ fn white_lambert_lit_head_on_shows_the_light_colour() {
 }
 
 #[test]
+fn radiance_is_capped_at_the_largest_float_instead_of_overflowing() {
+    assert_eq!(lights::radiance(1e30_f32, 1e30, 0.5), f32::MAX);
+    assert_eq!(lights::radiance(f64::MAX, f64::MAX, 1.0), f64::MAX);
+    assert_eq!(lights::radiance(f64::MAX, 0.0, 1.0), 0.0);
+}
+
+#[test]
 fn real_time_and_radiometric_conventions_agree_when_c_light_is_e_over_pi() {
     for (f, e, nl) in [(0.3, 2.0, 0.7), (1e-3, 1e4, 1.0), (5.0, 0.1, 1e-6)] {
         let a = lights::radiance_pi(f, e / core::f64::consts::PI, nl);
@@ -327,6 +334,10 @@ fn parameters_outside_the_domain_give_nan() {
     nan(lights::polynomial(1.0, 1.0, -1.0, 1.0));
     nan(lights::polynomial(-1.0, 1.0, 1.0, 1.0));
     nan(lights::spot_cone(0.5, 0.9, 0.8));
+    nan(lights::spot_cone(2.0, 0.5, 0.9));
+    nan(lights::radiance(f64::INFINITY, 1.0, 0.5));
+    nan(lights::radiance(1.0, f64::INFINITY, 0.5));
+    nan(lights::radiance(1.0, 1.0, 5.0));
     nan(lights::spot_cone(0.5, -1.5, 0.8));
 }
 

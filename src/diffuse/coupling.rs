@@ -96,15 +96,19 @@ pub fn fresnel_weight_symmetric<T: Real>(fresnel_v: T, fresnel_l: T) -> T {
 /// the albedo bound is lost (F varies over wi, so the mix is no convex combination of
 /// albedos).
 ///
-/// Domain: `fresnel` in [0, 1] (NaN outside); `f_diffuse` and `f_specular` finite and >= 0,
-/// up to the largest finite float (NaN in either gives NaN). Evaluated as
+/// Domain: `fresnel` in [0, 1]; `f_diffuse` and `f_specular` finite and >= 0, up to the
+/// largest finite float; NaN outside these domains and for NaN input. Evaluated as
 /// f_diffuse + F (f_specular - f_diffuse): the difference of two non-negative floats cannot
 /// overflow, and the result stays within [min, max] of the two values up to one rounding of
 /// that difference (one ulp), so it is finite and non-negative.
 #[inline]
 #[must_use]
 pub fn fresnel_mix<T: Real>(f_diffuse: T, f_specular: T, fresnel: T) -> T {
-    checked_unit(fresnel).mul_add(f_specular - f_diffuse, f_diffuse)
+    let lobe_ok = |f: T| f.simd_ge(T::ZERO) & f.is_finite();
+    nan_unless(
+        lobe_ok(f_diffuse) & lobe_ok(f_specular),
+        checked_unit(fresnel).mul_add(f_specular - f_diffuse, f_diffuse),
+    )
 }
 
 /// [`fresnel_mix`] with Schlick's F = F0 + (1 - F0)(1 - c)^5 ([`schlick`]) at `cos_theta`:

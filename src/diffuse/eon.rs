@@ -163,7 +163,7 @@ fn eon_with<T: Real>(
 /// backscattering peak), finite for every finite input.
 ///
 /// Source: Portsmouth, Kutz, Hill 2025, "EON: A Practical Energy-Preserving Rough Diffuse
-/// BRDF", JCGT 14(1), the `f_EON` listing with `exact = true`; Fujii 2013, "A tiny improvement
+/// BRDF", JCGT 14(1), the `f_EON` listing with `exact = true`; Fujii 2012, "A tiny improvement
 /// of Oren-Nayar reflectance model".
 #[inline]
 #[must_use]
@@ -227,7 +227,7 @@ fn fon_albedo_with<T: Real>(n_dot_v: T, sigma: T, g: impl Fn(T) -> T) -> T {
 /// Cosine-weighted average of the FON albedo, E_avg = 2 integral_0^1 E(mu) mu dmu =
 /// (1 + c2 sigma)/(1 + c1 sigma), c1 = 1/2 - 2/(3 pi), c2 = 2/3 - 28/(15 pi).
 ///
-/// Domain: sigma in [0, 1] (NaN outside). Edges: 1 at sigma = 0, 0.834 at sigma = 1.
+/// Domain: sigma in [0, 1] (NaN outside). Edges: 1 at sigma = 0, 0.833 at sigma = 1.
 ///
 /// Source: Portsmouth, Kutz, Hill 2025 (`avgEF` in the `f_EON` listing).
 #[inline]
@@ -352,7 +352,7 @@ impl<T: Real> Cltc<T> {
                 .mul_add(mu, k(0.20013))
                 * r;
         // The fit of d is meant to be <= 0 (the clip below assumes it), but rounds up to
-        // +0.0035 sigma within 6e-5 of mu = 1: its numerator's root lies at mu = 0.99994.
+        // +0.0035 sigma within 1e-4 of mu = 1: its numerator's root lies at mu = 0.999908.
         // Unclamped, the sampler would then emit directions up to 0.2 degrees below the horizon.
         let d = (k(0.475392)
             .mul_add(mu, k(-1.01625))
@@ -507,7 +507,7 @@ pub fn eon_cltc_pdf<T: Real>(wo: V3<T>, wi: V3<T>, sigma: T) -> T {
 
 /// Probability of the uniform lobe in EON's sampling mixture, the paper's fit
 /// P_u = sigma^0.1 (0.162925 - 0.372058 mu + 0.538233 mu^2 - 0.290822 mu^3), mu = wo.z
-/// clamped into [0, 1]; it lies in [0.038, 0.163] for sigma > 0 and is 0 at sigma = 0.
+/// clamped into [0, 1]; it lies in (0, 0.163] for sigma > 0 (0.038 at sigma = 1) and is 0 at sigma = 0.
 #[inline]
 fn uniform_weight<T: Real>(wo_z: T, sigma: T) -> T {
     let mu = wo_z.clamp(T::ZERO, T::ONE);

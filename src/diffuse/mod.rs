@@ -15,6 +15,19 @@
 //!   `l_dot_h` where the lobe needs them) and the parameters after; they return the BRDF f
 //!   (without the cosine n.l). They validate nothing: a parameter outside its documented domain
 //!   gives NaN, a NaN input gives NaN, and a direction at or below the horizon gives 0.
+//! - The third cosine differs by lobe, as in the shaders each form comes from: the Oren-Nayar
+//!   family and EON take `v_dot_l` (their s = v.l - (n.v)(n.l)); Burley's forms take `l_dot_h`
+//!   (Filament's `Fd_Burley(NoV, NoL, LoH, roughness)`), and the couplings take Fresnel values.
+//! - The roughness parameter means different things in different models, so the same number
+//!   gives different looks:
+//!
+//!   | lobe | parameter | meaning | domain |
+//!   |---|---|---|---|
+//!   | [`oren_nayar`], [`oren_nayar_full`] | `sigma` | standard deviation of the facet slope angle, radians | >= 0 |
+//!   | [`oren_nayar_fujii`], [`eon`] | `sigma` | Fujii's ratio B / A of the two terms (OpenPBR's `diffuse_roughness`) | [0, 1] |
+//!   | [`burley`], [`burley_renormalized`] | `roughness` | perceptual roughness r (GGX alpha = r^2) | [0, 1] |
+//!
+//!   [`oren_nayar_fujii`] documents how to map an Oren-Nayar sigma to Fujii's.
 //! - Each lobe also has a parameter type whose constructor validates (returning
 //!   [`ParamError`]), with `eval(wo, wi)` on local-frame unit vectors
 //!   (normal = +z).

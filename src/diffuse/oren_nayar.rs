@@ -427,7 +427,7 @@ fn fujii_kernel<T: Real>(n_dot_v: T, n_dot_l: T, v_dot_l: T, rho: T, a: T, b: T)
 ///
 /// Fujii writes f = rho (A' + B' s / t) with A' = 1 / (pi + (pi/2 - 2/3) sigma), B' = sigma A';
 /// that is the same function (A' = A / pi), and the form above is the one OpenPBR and the EON
-/// paper (Portsmouth, Kutz and Hill 2024) use. Against [`oren_nayar`] it keeps the s / t
+/// paper (Portsmouth, Kutz and Hill 2025) use. Against [`oren_nayar`] it keeps the s / t
 /// term for s < 0 (qualitative Oren-Nayar drops it, falling back to Lambert for forward
 /// scattering, which shows as dark rings on spheres) and normalizes so the directional albedo
 /// at grazing view (n.v -> 0, where the s / t term is largest) is exactly rho: with rho <= 1
@@ -446,7 +446,7 @@ fn fujii_kernel<T: Real>(n_dot_v: T, n_dot_l: T, v_dot_l: T, rho: T, a: T, b: T)
 /// at the smallest normal float so the value stays finite.
 ///
 /// Source: Fujii 2012, "A tiny improvement of Oren-Nayar reflectance model" (web note,
-/// mimosa-pudica.net); OpenPBR 1.1 and Portsmouth, Kutz and Hill 2024, "EON: A practical
+/// mimosa-pudica.net); OpenPBR 1.1 and Portsmouth, Kutz and Hill 2025, "EON: A practical
 /// energy-preserving rough diffuse BRDF", for the pi-factored form.
 #[inline]
 #[must_use]
