@@ -70,7 +70,7 @@ fn lambda_of_a<T: Real>(a: T) -> T {
 impl<T: Real> Microfacet<T> for Beckmann<T> {
     /// D(m) = exp(-(x^2/ax^2 + y^2/ay^2) / z^2) / (pi ax ay z^4) for m.z > 0, else 0 (Walter
     /// et al. 2007 eq. 25, anisotropic as Heitz 2014 eq. 80). The exponent is
-    /// tan^2(theta) / alpha^2, not the h.h of one seed note.
+    /// tan^2(theta) / alpha^2, not the h.h some course notes print.
     #[inline]
     fn d(&self, m: V3<T>) -> T {
         let (ax, ay) = (floor_alpha(self.alpha_x), floor_alpha(self.alpha_y));

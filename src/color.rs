@@ -132,7 +132,7 @@ pub fn rec709_oetf<T: Real>(l: T) -> T {
     T::select(l.simd_lt(T::splat(0.018)), lin, pow)
 }
 
-/// Plain gamma encoding x^(1 / gamma) (seed S1's gamma correction; 2.2 approximates sRGB).
+/// Plain gamma encoding x^(1 / gamma) (the classic display gamma correction; 2.2 approximates sRGB).
 /// Negative and NaN give 0; gamma must be positive.
 #[inline]
 #[must_use]

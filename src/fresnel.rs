@@ -20,7 +20,7 @@ use crate::real::Real;
 use crate::vec3::V3;
 
 /// Normal-incidence reflectance of a dielectric: F0 = ((eta - 1) / (eta + 1))^2 (Fresnel's
-/// equations at theta = 0; seed S2's "F0 from IOR"). Domain eta > 0; F0(1) = 0.
+/// equations at theta = 0; the "F0 from IOR" of real-time engines). Domain eta > 0; F0(1) = 0.
 #[inline]
 #[must_use]
 pub fn f0_from_ior<T: Real>(eta: T) -> T {
@@ -46,7 +46,7 @@ fn one_minus_pow5<T: Real>(cos_theta: T) -> T {
 
 /// Schlick's approximation F = F0 + (1 - F0)(1 - c)^5 (Schlick 1994, "An Inexpensive BRDF
 /// Model for Physically-based Rendering", eq. 15). Exact at c = 1 (F0) and c = 0 (1). The
-/// factor is (1 - c)^5, not the (1 - c^5) of one seed note. Approximation: max abs error
+/// factor is (1 - c)^5, not the (1 - c^5) some course notes print. Approximation: max abs error
 /// against [`dielectric`] 0.060 for eta = 1.33, 0.036 for 1.5, 0.074 for 2.4, 0.125 for 3, all
 /// near c = 0.1 (`cargo test --test fresnel_approximations -- --nocapture`).
 #[inline]

@@ -101,7 +101,7 @@ pub fn ev100_from_camera(aperture: f64, shutter_s: f64, iso: f64) -> f64 {
     libm::log2(aperture * aperture / shutter_s * 100.0 / iso)
 }
 
-/// Seed S1's exposure curve T(c) = 1 - exp(-c * exposure). T(0) = 0, T(inf) = 1; `exposure`
+/// The exponential exposure curve T(c) = 1 - exp(-c * exposure). T(0) = 0, T(inf) = 1; `exposure`
 /// must be > 0 (not checked: a kernel; validate with [`Exposure`]).
 #[inline]
 #[must_use]
@@ -623,8 +623,8 @@ impl Operator {
         Vec3A::from(self.apply_vec3(Vec3::from(c)))
     }
 
-    /// Every operator with its default parameters (exposure 1, white point 4), in the order of
-    /// the issue that specified them.
+    /// Every operator with its default parameters (exposure 1, white point 4), from the
+    /// simplest curves to the filmic ones.
     #[must_use]
     pub fn all() -> [Self; 14] {
         [
