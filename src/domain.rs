@@ -34,3 +34,20 @@ pub(crate) fn above_horizon<T: Real>(n_dot_v: T, n_dot_l: T, value: T) -> T {
     let nan = n_dot_v.is_nan() | n_dot_l.is_nan();
     T::select(above, value, T::select(nan, T::splat(f64::NAN), T::ZERO))
 }
+
+/// True where `x` lies in [0, 1] (false for NaN): the domain of every albedo, reflectance,
+/// Fresnel value, metallic weight and unit roughness in the crate.
+#[cfg_attr(not(any(feature = "diffuse", feature = "phong")), allow(dead_code))]
+#[inline]
+#[must_use]
+pub(crate) fn in_unit<T: Real>(x: T) -> T::Mask {
+    x.simd_ge(T::ZERO) & x.simd_le(T::ONE)
+}
+
+/// `x` where it lies in [0, 1], NaN elsewhere (and for NaN).
+#[cfg_attr(not(feature = "diffuse"), allow(dead_code))]
+#[inline]
+#[must_use]
+pub(crate) fn checked_unit<T: Real>(x: T) -> T {
+    nan_unless(in_unit(x), x)
+}

@@ -68,7 +68,7 @@
 //! 4.4 and 4.8; Burley 2012, "Physically-Based Shading at Disney" (alpha = roughness^2).
 
 use crate::cook_torrance::half_vector;
-use crate::domain::{above_horizon, nan_unless};
+use crate::domain::{above_horizon, in_unit, nan_unless};
 use crate::error::{ParamError, require};
 use crate::ggx::{self, Ggx};
 use crate::microfacet::alpha_from_perceptual;
@@ -123,7 +123,7 @@ pub enum DiffuseCoupling {
 #[must_use]
 pub fn f0_from_reflectance<T: Real>(reflectance: T) -> T {
     nan_unless(
-        reflectance.simd_ge(T::ZERO) & reflectance.simd_le(T::ONE),
+        in_unit(reflectance),
         T::splat(0.16) * reflectance * reflectance,
     )
 }
@@ -138,12 +138,6 @@ fn lerp<T: Real>(a: T, b: T, t: T) -> T {
 #[inline]
 fn mul_rgb<T: Real>(a: V3<T>, b: V3<T>) -> V3<T> {
     V3::new(a.x * b.x, a.y * b.y, a.z * b.z)
-}
-
-/// `x` in [0, 1] (false for NaN).
-#[inline]
-fn in_unit<T: Real>(x: T) -> T::Mask {
-    x.simd_ge(T::ZERO) & x.simd_le(T::ONE)
 }
 
 /// Every channel in [0, 1] (false for NaN).

@@ -62,7 +62,7 @@
 //! --test phong_energy --test phong_reciprocity --test phong_normalization --test
 //! phong_stability -- --nocapture`.
 
-use crate::domain::{above_horizon, nan_unless};
+use crate::domain::{above_horizon, in_unit, nan_unless};
 use crate::error::{ParamError, require};
 use crate::real::Real;
 use crate::vec3::V3;
@@ -76,12 +76,6 @@ const FRAC_1_8PI: f64 = 0.039_788_735_772_973_836;
 #[inline]
 fn exponent_ok<T: Real>(exponent: T) -> T::Mask {
     exponent.simd_ge(T::ZERO) & exponent.is_finite()
-}
-
-/// Mask of a valid reflectance coefficient: in [0, 1] (false for NaN).
-#[inline]
-fn unit_ok<T: Real>(k: T) -> T::Mask {
-    k.simd_ge(T::ZERO) & k.simd_le(T::ONE)
 }
 
 /// The lobe max(0, c)^n with c clamped to 1: 0 for c <= 0 (also at n = 0, the limit n -> 0+),
@@ -180,7 +174,7 @@ pub fn classic<T: Real>(n_dot_v: T, n_dot_l: T, r_dot_l: T, ks: T, exponent: T) 
     // then rounded once more at most, not scaled up after a subnormal product.
     let f = ks / n_dot_l.max(T::MIN_POSITIVE) * lobe(r_dot_l, exponent);
     nan_unless(
-        unit_ok(ks) & exponent_ok(exponent) & !r_dot_l.is_nan(),
+        in_unit(ks) & exponent_ok(exponent) & !r_dot_l.is_nan(),
         above_horizon(n_dot_v, n_dot_l, f),
     )
 }
@@ -197,7 +191,7 @@ pub fn classic<T: Real>(n_dot_v: T, n_dot_l: T, r_dot_l: T, ks: T, exponent: T) 
 #[must_use]
 pub fn modified<T: Real>(n_dot_v: T, n_dot_l: T, r_dot_l: T, ks: T, exponent: T) -> T {
     nan_unless(
-        unit_ok(ks) & exponent_ok(exponent) & !r_dot_l.is_nan(),
+        in_unit(ks) & exponent_ok(exponent) & !r_dot_l.is_nan(),
         above_horizon(n_dot_v, n_dot_l, ks * lobe(r_dot_l, exponent)),
     )
 }
@@ -219,7 +213,7 @@ pub fn modified<T: Real>(n_dot_v: T, n_dot_l: T, r_dot_l: T, ks: T, exponent: T)
 #[must_use]
 pub fn normalized<T: Real>(n_dot_v: T, n_dot_l: T, r_dot_l: T, ks: T, exponent: T) -> T {
     nan_unless(
-        unit_ok(ks) & exponent_ok(exponent) & !r_dot_l.is_nan(),
+        in_unit(ks) & exponent_ok(exponent) & !r_dot_l.is_nan(),
         above_horizon(
             n_dot_v,
             n_dot_l,
@@ -259,7 +253,7 @@ pub fn diffuse_specular<T: Real>(
 /// Mask of kd, ks in [0, 1] with kd + ks <= 1 up to one rounding.
 #[inline]
 fn sum_ok<T: Real>(kd: T, ks: T) -> T::Mask {
-    unit_ok(kd) & unit_ok(ks) & (kd + ks).simd_le(T::ONE + T::EPSILON)
+    in_unit(kd) & in_unit(ks) & (kd + ks).simd_le(T::ONE + T::EPSILON)
 }
 
 /// Unnormalized Blinn-Phong: f = ks (n.h)^n (Blinn 1977, "Models of Light Reflection for
@@ -274,7 +268,7 @@ fn sum_ok<T: Real>(kd: T, ks: T) -> T::Mask {
 #[must_use]
 pub fn blinn_phong<T: Real>(n_dot_v: T, n_dot_l: T, n_dot_h: T, ks: T, exponent: T) -> T {
     nan_unless(
-        unit_ok(ks) & exponent_ok(exponent) & !n_dot_h.is_nan(),
+        in_unit(ks) & exponent_ok(exponent) & !n_dot_h.is_nan(),
         above_horizon(n_dot_v, n_dot_l, ks * lobe(n_dot_h, exponent)),
     )
 }
@@ -299,7 +293,7 @@ pub fn blinn_phong_normalized<T: Real>(
     exponent: T,
 ) -> T {
     nan_unless(
-        unit_ok(ks) & exponent_ok(exponent) & !n_dot_h.is_nan(),
+        in_unit(ks) & exponent_ok(exponent) & !n_dot_h.is_nan(),
         above_horizon(
             n_dot_v,
             n_dot_l,
@@ -325,7 +319,7 @@ pub fn blinn_phong_normalized_approx<T: Real>(
     exponent: T,
 ) -> T {
     nan_unless(
-        unit_ok(ks) & exponent_ok(exponent) & !n_dot_h.is_nan(),
+        in_unit(ks) & exponent_ok(exponent) & !n_dot_h.is_nan(),
         above_horizon(
             n_dot_v,
             n_dot_l,
@@ -372,7 +366,7 @@ fn n_dot_h<T: Real>(wo: V3<T>, wi: V3<T>) -> T {
 
 /// Validates ks in [0, 1] and the exponent (finite, >= 0) in every lane.
 fn validate<T: Real>(ks: T, exponent: T) -> Result<(), ParamError> {
-    require::<T>(unit_ok(ks), "ks", "in [0, 1]")?;
+    require::<T>(in_unit(ks), "ks", "in [0, 1]")?;
     require::<T>(exponent_ok(exponent), "exponent", "finite and >= 0")
 }
 
@@ -472,7 +466,7 @@ impl<T: Real> PhongDiffuseSpecular<T> {
     /// and non-negative, in every lane; else [`ParamError`] naming `"kd"`, `"ks"`,
     /// `"kd + ks"` or `"exponent"`.
     pub fn new(kd: T, ks: T, exponent: T) -> Result<Self, ParamError> {
-        require::<T>(unit_ok(kd), "kd", "in [0, 1]")?;
+        require::<T>(in_unit(kd), "kd", "in [0, 1]")?;
         validate(ks, exponent)?;
         require::<T>(sum_ok(kd, ks), "kd + ks", "<= 1")?;
         Ok(Self { kd, ks, exponent })

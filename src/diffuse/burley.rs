@@ -29,7 +29,7 @@
 //! at r = 1); elsewhere it stays below 1, and well below: 0.69 head-on at r = 1, and towards
 //! 0 at grazing for r = 0, where its F_D90 = 0.
 
-use crate::domain::{above_horizon, nan_unless};
+use crate::domain::{above_horizon, in_unit, nan_unless};
 use crate::error::{ParamError, require};
 use crate::fresnel::schlick_f90;
 use crate::real::Real;
@@ -144,13 +144,9 @@ fn renormalized_core<T: Real>(n_dot_v: T, n_dot_l: T, cos2_d: T, rho: T, roughne
 
 /// Validates rho and the perceptual roughness for the two Burley types.
 fn validate<T: Real>(rho: T, roughness: T) -> Result<(), ParamError> {
+    require::<T>(in_unit(rho), "rho", "in [0, 1]")?;
     require::<T>(
-        rho.simd_ge(T::ZERO) & rho.simd_le(T::ONE),
-        "rho",
-        "in [0, 1]",
-    )?;
-    require::<T>(
-        roughness.simd_ge(T::ZERO) & roughness.simd_le(T::ONE),
+        in_unit(roughness),
         "roughness",
         "in [0, 1] (perceptual roughness; GGX alpha = roughness^2)",
     )

@@ -25,7 +25,7 @@
 //! --nocapture`. Precision: f32 within 2.4e-7 of f64 for every function here (absolute, on
 //! unit-scale inputs), lanes bit-identical to scalars (`--test diffuse_coupling_stability`).
 
-use crate::domain::{above_horizon, nan_unless};
+use crate::domain::{above_horizon, checked_unit, in_unit, nan_unless};
 use crate::error::{ParamError, require};
 use crate::fresnel::schlick;
 use crate::real::Real;
@@ -34,13 +34,7 @@ use crate::vec3::V3;
 /// Both in [0, 1] (false for NaN).
 #[inline]
 fn unit_pair<T: Real>(a: T, b: T) -> T::Mask {
-    a.simd_ge(T::ZERO) & a.simd_le(T::ONE) & b.simd_ge(T::ZERO) & b.simd_le(T::ONE)
-}
-
-/// `x` where it lies in [0, 1], NaN elsewhere (and for NaN).
-#[inline]
-fn checked_unit<T: Real>(x: T) -> T {
-    nan_unless(x.simd_ge(T::ZERO) & x.simd_le(T::ONE), x)
+    in_unit(a) & in_unit(b)
 }
 
 /// The one-sided diffuse weight w = (1 - F(wi)) / (1 - F0): the light that enters the surface
@@ -188,11 +182,7 @@ pub fn ashikhmin_shirley<T: Real>(n_dot_v: T, n_dot_l: T, rho: T, rs: T) -> T {
 
 /// Validates rho and a normal-incidence reflectance for the coupled lobes.
 fn validate<T: Real>(rho: T, f0: T, name: &'static str) -> Result<(), ParamError> {
-    require::<T>(
-        rho.simd_ge(T::ZERO) & rho.simd_le(T::ONE),
-        "rho",
-        "in [0, 1]",
-    )?;
+    require::<T>(in_unit(rho), "rho", "in [0, 1]")?;
     require::<T>(f0.simd_ge(T::ZERO) & f0.simd_le(T::ONE), name, "in [0, 1]")
 }
 

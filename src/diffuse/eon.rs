@@ -36,8 +36,7 @@
 //! As everywhere in this crate, a parameter outside its domain gives NaN for every pair of
 //! directions, those below the horizon included, and a NaN input gives NaN.
 
-use super::checked_albedo;
-use crate::domain::{above_horizon, nan_unless};
+use crate::domain::{above_horizon, checked_unit, in_unit, nan_unless};
 use crate::error::{ParamError, require};
 use crate::real::Real;
 use crate::vec3::V3;
@@ -56,18 +55,6 @@ const G_FIT: [f64; 4] = [
     -0.332_181_442,
     0.071_442_995_3,
 ];
-
-/// `sigma` where it lies in [0, 1], NaN elsewhere (and for NaN).
-#[inline]
-fn checked_sigma<T: Real>(sigma: T) -> T {
-    nan_unless(unit_interval(sigma), sigma)
-}
-
-/// `x` in [0, 1] (false for NaN).
-#[inline]
-fn unit_interval<T: Real>(x: T) -> T::Mask {
-    x.simd_ge(T::ZERO) & x.simd_le(T::ONE)
-}
 
 /// Fujii's A = 1 / (1 + c1 sigma).
 #[inline]
@@ -123,8 +110,8 @@ fn eon_with<T: Real>(
     sigma: T,
     g: impl Fn(T) -> T,
 ) -> T {
-    let rho = checked_albedo(rho);
-    let sigma = checked_sigma(sigma);
+    let rho = checked_unit(rho);
+    let sigma = checked_unit(sigma);
     let mu_o = n_dot_v.clamp(T::ZERO, T::ONE);
     let mu_i = n_dot_l.clamp(T::ZERO, T::ONE);
     // Oren-Nayar's s = sin_i sin_o cos(phi_i - phi_o), in [-1, 1] for unit vectors. Clamped
@@ -142,7 +129,7 @@ fn eon_with<T: Real>(
     let value = rho.mul_add(single, rho_ms_with(rho, sigma, a) * multi) * T::FRAC_1_PI;
     // The domain check wraps the horizon guard: a bad parameter is NaN below the horizon too.
     nan_unless(
-        unit_interval(rho) & unit_interval(sigma),
+        in_unit(rho) & in_unit(sigma),
         above_horizon(n_dot_v, n_dot_l, value),
     )
 }
@@ -217,11 +204,11 @@ pub fn eon_fon_albedo_approx<T: Real>(n_dot_v: T, sigma: T) -> T {
 
 #[inline]
 fn fon_albedo_with<T: Real>(n_dot_v: T, sigma: T, g: impl Fn(T) -> T) -> T {
-    let sigma = checked_sigma(sigma);
+    let sigma = checked_unit(sigma);
     let mu = n_dot_v.clamp(T::ZERO, T::ONE);
     // 1 - E = sigma A (c1 - g): the form shared with the BRDF, so the cap at 1 is the same.
     let e = T::ONE - sigma * fon_a(sigma) * loss(g(mu));
-    nan_unless(unit_interval(sigma), above_horizon(n_dot_v, T::ONE, e))
+    nan_unless(in_unit(sigma), above_horizon(n_dot_v, T::ONE, e))
 }
 
 /// Cosine-weighted average of the FON albedo, E_avg = 2 integral_0^1 E(mu) mu dmu =
@@ -233,7 +220,7 @@ fn fon_albedo_with<T: Real>(n_dot_v: T, sigma: T, g: impl Fn(T) -> T) -> T {
 #[inline]
 #[must_use]
 pub fn eon_fon_average_albedo<T: Real>(sigma: T) -> T {
-    let sigma = checked_sigma(sigma);
+    let sigma = checked_unit(sigma);
     T::splat(C2).mul_add(sigma, T::ONE) * fon_a(sigma)
 }
 
@@ -248,7 +235,7 @@ pub fn eon_fon_average_albedo<T: Real>(sigma: T) -> T {
 #[inline]
 #[must_use]
 pub fn eon_multiscatter_albedo<T: Real>(rho: T, sigma: T) -> T {
-    let (rho, sigma) = (checked_albedo(rho), checked_sigma(sigma));
+    let (rho, sigma) = (checked_unit(rho), checked_unit(sigma));
     rho_ms_with(rho, sigma, fon_a(sigma))
 }
 
@@ -287,7 +274,7 @@ pub fn eon_albedo_approx<T: Real>(n_dot_v: T, rho: T, sigma: T) -> T {
 
 #[inline]
 fn eon_albedo_with<T: Real>(n_dot_v: T, rho: T, sigma: T, g: impl Fn(T) -> T) -> T {
-    let (rho, sigma) = (checked_albedo(rho), checked_sigma(sigma));
+    let (rho, sigma) = (checked_unit(rho), checked_unit(sigma));
     let mu = n_dot_v.clamp(T::ZERO, T::ONE);
     let a = fon_a(sigma);
     let one_minus_e = sigma * a * loss(g(mu));
@@ -295,7 +282,7 @@ fn eon_albedo_with<T: Real>(n_dot_v: T, rho: T, sigma: T, g: impl Fn(T) -> T) ->
     // rho E + rho_ms (1 - E) = rho + (rho_ms - rho)(1 - E).
     let value = (rho_ms - rho).mul_add(one_minus_e, rho);
     nan_unless(
-        unit_interval(rho) & unit_interval(sigma),
+        in_unit(rho) & in_unit(sigma),
         above_horizon(n_dot_v, T::ONE, value),
     )
 }
@@ -479,7 +466,7 @@ impl<T: Real> Cltc<T> {
 #[inline]
 #[must_use]
 pub fn eon_cltc_sample<T: Real>(wo: V3<T>, sigma: T, u1: T, u2: T) -> (V3<T>, T) {
-    let ltc = Cltc::new(wo, checked_sigma(sigma));
+    let ltc = Cltc::new(wo, checked_unit(sigma));
     let phi = T::TWO * T::PI * clamp_u(u2);
     let (wi, pdf) = ltc.sample_disk(clamp_u(u1), phi.cos(), phi.sin());
     // The pdf does not depend on wo's azimuth, but a NaN there (which makes wi.x NaN) must
@@ -487,7 +474,7 @@ pub fn eon_cltc_sample<T: Real>(wo: V3<T>, sigma: T, u1: T, u2: T) -> (V3<T>, T)
     let pdf = nan_unless(!wi.x.is_nan(), pdf);
     (
         wi,
-        nan_unless(unit_interval(sigma), above_horizon(wo.z, wi.z, pdf)),
+        nan_unless(in_unit(sigma), above_horizon(wo.z, wi.z, pdf)),
     )
 }
 
@@ -501,8 +488,8 @@ pub fn eon_cltc_sample<T: Real>(wo: V3<T>, sigma: T, u1: T, u2: T) -> (V3<T>, T)
 #[inline]
 #[must_use]
 pub fn eon_cltc_pdf<T: Real>(wo: V3<T>, wi: V3<T>, sigma: T) -> T {
-    let ltc = Cltc::new(wo, checked_sigma(sigma));
-    nan_unless(unit_interval(sigma), above_horizon(wo.z, wi.z, ltc.pdf(wi)))
+    let ltc = Cltc::new(wo, checked_unit(sigma));
+    nan_unless(in_unit(sigma), above_horizon(wo.z, wi.z, ltc.pdf(wi)))
 }
 
 /// Probability of the uniform lobe in EON's sampling mixture, the paper's fit
@@ -539,7 +526,7 @@ fn uniform_weight<T: Real>(wo_z: T, sigma: T) -> T {
 #[inline]
 #[must_use]
 pub fn eon_sample<T: Real>(wo: V3<T>, sigma: T, u1: T, u2: T) -> (V3<T>, T) {
-    let sigma = checked_sigma(sigma);
+    let sigma = checked_unit(sigma);
     let ltc = Cltc::new(wo, sigma);
     let p_u = uniform_weight(wo.z, sigma);
     let u1 = clamp_u(u1);
@@ -574,7 +561,7 @@ fn mixture_pdf<T: Real>(ltc: &Cltc<T>, p_u: T, wo: V3<T>, wi: V3<T>) -> T {
 #[inline]
 #[must_use]
 pub fn eon_pdf<T: Real>(wo: V3<T>, wi: V3<T>, sigma: T) -> T {
-    let sigma = checked_sigma(sigma);
+    let sigma = checked_unit(sigma);
     let ltc = Cltc::new(wo, sigma);
     mixture_pdf(&ltc, uniform_weight(wo.z, sigma), wo, wi)
 }
@@ -591,16 +578,8 @@ impl<T: Real> Eon<T> {
     /// An EON lobe; rho and sigma must lie in [0, 1] in every lane, else [`ParamError`] (sigma
     /// above 1 makes the FON term negative; see [`eon`]).
     pub fn new(rho: T, sigma: T) -> Result<Self, ParamError> {
-        require::<T>(
-            rho.simd_ge(T::ZERO) & rho.simd_le(T::ONE),
-            "rho",
-            "in [0, 1]",
-        )?;
-        require::<T>(
-            sigma.simd_ge(T::ZERO) & sigma.simd_le(T::ONE),
-            "sigma",
-            "in [0, 1]",
-        )?;
+        require::<T>(in_unit(rho), "rho", "in [0, 1]")?;
+        require::<T>(in_unit(sigma), "sigma", "in [0, 1]")?;
         Ok(Self { rho, sigma })
     }
 

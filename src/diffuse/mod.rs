@@ -32,7 +32,7 @@
 //!   [`ParamError`]), with `eval(wo, wi)` on local-frame unit vectors
 //!   (normal = +z).
 
-use crate::domain::{above_horizon, nan_unless};
+use crate::domain::{above_horizon, in_unit, nan_unless};
 use crate::error::{ParamError, require};
 use crate::real::Real;
 use crate::vec3::V3;
@@ -47,12 +47,6 @@ pub use coupling::*;
 pub use eon::*;
 pub use oren_nayar::*;
 
-/// `rho` where it lies in [0, 1], NaN elsewhere (and for NaN).
-#[inline]
-pub(crate) fn checked_albedo<T: Real>(rho: T) -> T {
-    nan_unless(rho.simd_ge(T::ZERO) & rho.simd_le(T::ONE), rho)
-}
-
 /// Lambert's diffuse BRDF, f = rho / pi: light scattered equally into every direction of the
 /// upper hemisphere, with directional albedo rho at every angle.
 ///
@@ -66,7 +60,7 @@ pub(crate) fn checked_albedo<T: Real>(rho: T) -> T {
 pub fn lambert<T: Real>(n_dot_v: T, n_dot_l: T, rho: T) -> T {
     // The domain check wraps the horizon guard so a bad rho is NaN on both sides of it.
     nan_unless(
-        rho.simd_ge(T::ZERO) & rho.simd_le(T::ONE),
+        in_unit(rho),
         above_horizon(n_dot_v, n_dot_l, rho * T::FRAC_1_PI),
     )
 }
@@ -80,11 +74,7 @@ pub struct Lambert<T> {
 impl<T: Real> Lambert<T> {
     /// A Lambertian lobe; rho must lie in [0, 1] in every lane, else [`ParamError`].
     pub fn new(rho: T) -> Result<Self, ParamError> {
-        require::<T>(
-            rho.simd_ge(T::ZERO) & rho.simd_le(T::ONE),
-            "rho",
-            "in [0, 1]",
-        )?;
+        require::<T>(in_unit(rho), "rho", "in [0, 1]")?;
         Ok(Self { rho })
     }
 

@@ -45,8 +45,7 @@
 //! normal view. Fujii's form stays at or below rho everywhere, reaching rho at grazing view
 //! by construction (0.9996 at theta_o = 89.9 deg, sigma = 1).
 
-use super::checked_albedo;
-use crate::domain::{above_horizon, nan_unless};
+use crate::domain::{above_horizon, checked_unit, in_unit, nan_unless};
 use crate::error::{ParamError, require};
 use crate::real::Real;
 use crate::vec3::V3;
@@ -157,7 +156,7 @@ pub fn oren_nayar<T: Real>(n_dot_v: T, n_dot_l: T, v_dot_l: T, rho: T, sigma: T)
         n_dot_v,
         n_dot_l,
         v_dot_l,
-        checked_albedo(rho),
+        checked_unit(rho),
         oren_nayar_a(sigma),
         oren_nayar_b(sigma),
     )
@@ -175,11 +174,7 @@ pub struct OrenNayar<T> {
 
 /// Validates rho in [0, 1] and sigma finite and >= 0 in every lane.
 fn require_rho_sigma<T: Real>(rho: T, sigma: T) -> Result<(), ParamError> {
-    require::<T>(
-        rho.simd_ge(T::ZERO) & rho.simd_le(T::ONE),
-        "rho",
-        "in [0, 1]",
-    )?;
+    require::<T>(in_unit(rho), "rho", "in [0, 1]")?;
     require::<T>(
         sigma.simd_ge(T::ZERO) & sigma.simd_le(T::MAX),
         "sigma",
@@ -335,7 +330,7 @@ pub fn oren_nayar_full<T: Real>(n_dot_v: T, n_dot_l: T, v_dot_l: T, rho: T, sigm
         n_dot_v,
         n_dot_l,
         v_dot_l,
-        checked_albedo(rho),
+        checked_unit(rho),
         FullCoefficients::new(sigma),
     )
 }
@@ -394,12 +389,6 @@ fn fujii_a<T: Real>(sigma: T) -> T {
     T::ONE / T::splat(K).mul_add(sigma, T::ONE)
 }
 
-/// `sigma` where it lies in [0, 1], NaN elsewhere.
-#[inline]
-fn checked_fujii_sigma<T: Real>(sigma: T) -> T {
-    nan_unless(sigma.simd_ge(T::ZERO) & sigma.simd_le(T::ONE), sigma)
-}
-
 #[inline]
 fn fujii_kernel<T: Real>(n_dot_v: T, n_dot_l: T, v_dot_l: T, rho: T, a: T, b: T) -> T {
     let s = azimuth_term(n_dot_v, n_dot_l, v_dot_l);
@@ -451,9 +440,9 @@ fn fujii_kernel<T: Real>(n_dot_v: T, n_dot_l: T, v_dot_l: T, rho: T, a: T, b: T)
 #[inline]
 #[must_use]
 pub fn oren_nayar_fujii<T: Real>(n_dot_v: T, n_dot_l: T, v_dot_l: T, rho: T, sigma: T) -> T {
-    let sigma = checked_fujii_sigma(sigma);
+    let sigma = checked_unit(sigma);
     let a = fujii_a(sigma);
-    fujii_kernel(n_dot_v, n_dot_l, v_dot_l, checked_albedo(rho), a, sigma * a)
+    fujii_kernel(n_dot_v, n_dot_l, v_dot_l, checked_unit(rho), a, sigma * a)
 }
 
 /// Fujii's improved Oren-Nayar ([`oren_nayar_fujii`]) with validated parameters and its
@@ -470,16 +459,8 @@ impl<T: Real> OrenNayarFujii<T> {
     /// Fujii's lobe of albedo rho in [0, 1] and roughness sigma in [0, 1] (his sigma', the
     /// ratio B / A); [`ParamError`] otherwise.
     pub fn new(rho: T, sigma: T) -> Result<Self, ParamError> {
-        require::<T>(
-            rho.simd_ge(T::ZERO) & rho.simd_le(T::ONE),
-            "rho",
-            "in [0, 1]",
-        )?;
-        require::<T>(
-            sigma.simd_ge(T::ZERO) & sigma.simd_le(T::ONE),
-            "sigma",
-            "in [0, 1]",
-        )?;
+        require::<T>(in_unit(rho), "rho", "in [0, 1]")?;
+        require::<T>(in_unit(sigma), "sigma", "in [0, 1]")?;
         let a = fujii_a(sigma);
         Ok(Self {
             rho,
