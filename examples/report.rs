@@ -121,14 +121,8 @@ fn microfacet_checks() {
         (1.0, 0.01),
         (0.5, 0.05),
     ] {
-        let g = Ggx::new(ax, ay).unwrap_or(Ggx {
-            alpha_x: 1.0,
-            alpha_y: 1.0,
-        });
-        let b = beckmann::Beckmann::new(ax, ay).unwrap_or(beckmann::Beckmann {
-            alpha_x: 1.0,
-            alpha_y: 1.0,
-        });
+        let g = Ggx::new(ax, ay).expect("valid alpha");
+        let b = beckmann::Beckmann::new(ax, ay).expect("valid alpha");
         let eg = integrate::ndf_projected_area(|m| g.d(V3::from(m)));
         let eb = integrate::ndf_projected_area(|m| b.d(V3::from(m)));
         println!("| {ax} x {ay} | {:.9} | {:.9} |", eg.value, eb.value);
@@ -137,14 +131,8 @@ fn microfacet_checks() {
     println!("| alpha | theta_o | GGX | Beckmann |");
     println!("|---|---|---|---|");
     for alpha in [0.01, 0.2, 1.0] {
-        let g = Ggx {
-            alpha_x: alpha,
-            alpha_y: alpha,
-        };
-        let b = beckmann::Beckmann {
-            alpha_x: alpha,
-            alpha_y: alpha,
-        };
+        let g = Ggx::new(alpha, alpha).expect("valid alpha");
+        let b = beckmann::Beckmann::new(alpha, alpha).expect("valid alpha");
         for deg in [0.0f64, 60.0, 89.0, 89.9] {
             let t = deg.to_radians();
             let wo = DVec3::new(t.sin(), 0.0, t.cos());
@@ -172,10 +160,7 @@ fn energy_loss() -> Vec<Vec<f64>> {
     println!("|---|{}", "---|".repeat(LOSS_THETAS.len()));
     let mut table = Vec::new();
     for a in LOSS_ALPHAS {
-        let g = Ggx {
-            alpha_x: a,
-            alpha_y: a,
-        };
+        let g = Ggx::new(a, a).expect("valid alpha");
         print!("| {a} |");
         let mut row = Vec::new();
         for t in LOSS_THETAS {
@@ -448,10 +433,19 @@ fn curves_image() -> Image {
     img
 }
 
+/// The per-function ULP table against the correctly rounded MPFR oracle. Measuring it needs
+/// GMP and MPFR (the `brdf-oracle` workspace member); `.ci/run` re-measures it on every run
+/// and fails if this committed copy differs, so what the report prints is current.
+fn accuracy_table() {
+    println!("\n## Exact functions against the correctly rounded oracle (max ULP)\n");
+    print!("{}", include_str!("../docs/accuracy.md"));
+}
+
 fn main() -> Result<(), Box<dyn std::error::Error>> {
     println!("# brdf report\n");
     integrator_checks();
     lane_checks();
+    accuracy_table();
     microfacet_checks();
     let loss = energy_loss();
     approximation_errors();

@@ -4,6 +4,9 @@
 //! - A parameter outside its documented domain, reaching a function that does not validate it,
 //!   gives NaN.
 //! - A finite direction below the horizon gives 0 (reflection only).
+//!
+//! The crate docs ("Bad input") state the rule for users; these helpers are how kernels keep it.
+//! Each feature uses a subset, so unused ones are allowed (`lib.rs`).
 
 use crate::real::Real;
 
@@ -11,10 +14,6 @@ use crate::real::Real;
 ///
 /// Build `ok` from comparisons (`simd_ge`, `simd_le`, ...), which are false for NaN, so a NaN
 /// parameter fails the check without a separate test.
-#[cfg_attr(
-    not(any(feature = "diffuse", feature = "phong", feature = "lights")),
-    allow(dead_code)
-)]
 #[inline]
 #[must_use]
 pub(crate) fn nan_unless<T: Real>(ok: T::Mask, value: T) -> T {
@@ -26,7 +25,6 @@ pub(crate) fn nan_unless<T: Real>(ok: T::Mask, value: T) -> T {
 ///
 /// Without the NaN case a guard written `select(c > 0, value, 0)` turns a NaN cosine into a
 /// plausible 0.
-#[cfg_attr(not(any(feature = "diffuse", feature = "phong")), allow(dead_code))]
 #[inline]
 #[must_use]
 pub(crate) fn above_horizon<T: Real>(n_dot_v: T, n_dot_l: T, value: T) -> T {
@@ -37,7 +35,6 @@ pub(crate) fn above_horizon<T: Real>(n_dot_v: T, n_dot_l: T, value: T) -> T {
 
 /// True where `x` lies in [0, 1] (false for NaN): the domain of every albedo, reflectance,
 /// Fresnel value, metallic weight and unit roughness in the crate.
-#[cfg_attr(not(any(feature = "diffuse", feature = "phong")), allow(dead_code))]
 #[inline]
 #[must_use]
 pub(crate) fn in_unit<T: Real>(x: T) -> T::Mask {
@@ -45,9 +42,35 @@ pub(crate) fn in_unit<T: Real>(x: T) -> T::Mask {
 }
 
 /// `x` where it lies in [0, 1], NaN elsewhere (and for NaN).
-#[cfg_attr(not(feature = "diffuse"), allow(dead_code))]
 #[inline]
 #[must_use]
 pub(crate) fn checked_unit<T: Real>(x: T) -> T {
     nan_unless(in_unit(x), x)
+}
+
+/// `value` where `c > 0`; NaN where `c` is NaN; 0 elsewhere: the one-cosine form of
+/// [`above_horizon`] (an NDF of n.h, a Schlick factor of v.h).
+#[inline]
+#[must_use]
+pub(crate) fn above<T: Real>(c: T, value: T) -> T {
+    T::select(
+        c.simd_gt(T::ZERO),
+        value,
+        T::select(c.is_nan(), T::splat(f64::NAN), T::ZERO),
+    )
+}
+
+/// NaN where `bad` holds, `value` elsewhere (the complement of [`nan_unless`], for masks built
+/// from `is_nan`).
+#[inline]
+#[must_use]
+pub(crate) fn nan_where<T: Real>(bad: T::Mask, value: T) -> T {
+    T::select(bad, T::splat(f64::NAN), value)
+}
+
+/// True in lanes where any component of `v` is NaN.
+#[inline]
+#[must_use]
+pub(crate) fn any_nan3<T: Real>(v: crate::vec3::V3<T>) -> T::Mask {
+    v.x.is_nan() | v.y.is_nan() | v.z.is_nan()
 }

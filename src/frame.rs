@@ -28,7 +28,7 @@ impl<T: Real> Frame<T> {
     /// Branch-free and continuous except across the plane n.z = 0, where it stays
     /// orthonormal to rounding (the Frisvad 2012 construction it improves on loses
     /// orthogonality near n = (0, 0, -1)). Domain: unit `n`; the error of the basis grows with
-    /// `| |n| - 1 |`.
+    /// `| |n| - 1 |`. A NaN component of `n` gives a frame of NaN axes.
     ///
     /// Source: Duff, Burgess, Christensen, Hery, Kensler, Liani, Villemin 2017, "Building an
     /// Orthonormal Basis, Revisited", JCGT 6(1).
@@ -40,7 +40,15 @@ impl<T: Real> Frame<T> {
         let c = n.x * n.y * a;
         let t = V3::new(T::ONE + s * n.x * n.x * a, s * c, -s * n.x);
         let b = V3::new(c, s + n.y * n.y * a, -n.y);
-        Self { t, b, n }
+        // Some axes skip a component (b.z = -n.y whatever n.x is; copysign turns a NaN n.z into
+        // a sign): a NaN anywhere in n gives an all-NaN frame, never a plausible axis.
+        let bad = crate::domain::any_nan3(n);
+        let nan = |v: V3<T>| V3::select(bad, V3::splat(T::splat(f64::NAN)), v);
+        Self {
+            t: nan(t),
+            b: nan(b),
+            n: nan(n),
+        }
     }
 
     /// A frame from three given orthonormal axes (for example an anisotropic material's

@@ -26,6 +26,35 @@
 //! | `color` | sRGB / Rec.709 transfer, luminance, colour matrices | `tonemap` |
 //! | `integrate` | hemisphere integrators: albedo, NDF area, weak furnace, reciprocity | `integrate` |
 //!
+//! ## Bad input: one rule for every function
+//! Every public kernel keeps the same rule, on `f32`, `f64`, `f32x8` and `f64x4` alike
+//! (`tests/bad_input.rs` lists every kernel and checks each clause on every lane type):
+//!
+//! 1. **NaN in, NaN out.** A NaN in any input (a cosine, a direction component, a parameter,
+//!    a uniform sample) gives NaN, never a plausible finite value: a CPU reference must surface
+//!    the bug, not hide it. Samplers return a NaN direction and a NaN pdf. One NaN lane does
+//!    not touch the other lanes.
+//! 2. **An invalid parameter gives NaN.** A free function does not validate its parameters
+//!    beyond this: alpha < 0, eta <= 0, k < 0, an albedo outside [0, 1] give NaN, never the
+//!    value of some other parameter (a negative alpha is not quietly a mirror). Parameter
+//!    types (`ggx::Ggx`, `beckmann::Beckmann`, the diffuse and material parameters)
+//!    validate in their constructors, return a [`ParamError`], and keep their fields private so
+//!    the check cannot be skipped.
+//! 3. **Inputs are clamped to their meaning.** Cosines live in [-1, 1]; one just above 1 (an
+//!    unnormalized vector) counts as 1; a finite direction at or below the horizon reflects
+//!    nothing (0); uniform samples are clamped into [0, 1).
+//! 4. **The whole documented domain is safe.** Finite in-domain input gives finite output,
+//!    never inf: physically meaningless extremes are clamped by documented constants
+//!    (`microfacet::ALPHA_MIN` and `ALPHA_MAX`), poles (Lambda at the horizon) and products
+//!    that would overflow are capped at the largest finite value. The domain a doc states is
+//!    the domain the tests sweep, up to the largest finite float.
+//!
+//! ## Accuracy
+//! The exact functions (NDFs, Smith terms, Fresnel, the transfer functions, the exact diffuse
+//! and Phong lobes) are held to ULP bounds against a correctly rounded reference (MPFR at 256
+//! bits, evaluating each paper's own definition) by the `brdf-oracle` workspace member; the
+//! measured table is `docs/accuracy.md` in the repository, and the report prints it.
+//!
 //! ## Tour
 //! ```
 //! use brdf::{Real, V3, frame::Frame};
@@ -64,6 +93,7 @@ pub mod color;
 pub mod cook_torrance;
 #[cfg(feature = "diffuse")]
 pub mod diffuse;
+#[allow(dead_code)] // each feature uses a subset of the guards
 mod domain;
 #[cfg(feature = "fresnel")]
 pub mod fresnel;

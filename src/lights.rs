@@ -55,12 +55,22 @@ fn nan_of<T: Real>(x: T) -> T {
 #[inline]
 #[must_use]
 pub fn radiance<T: Real>(f: T, e_perp: T, n_dot_l: T) -> T {
+    reflected(f, e_perp, n_dot_l, T::ONE)
+}
+
+/// f e max(0, n.l) k for a constant k > 0, capped at `T::MAX`, with the domain checks of
+/// [`radiance`]. k multiplies last, so a finite f e n.l k is never lost to an intermediate
+/// overflow (f k first would overflow for f near `T::MAX`, and its cap would change the
+/// product).
+#[inline]
+fn reflected<T: Real>(f: T, e_perp: T, n_dot_l: T, k: T) -> T {
     let finite_non_negative = |x: T| x.simd_ge(T::ZERO) & x.is_finite();
     let ok = finite_non_negative(f)
         & finite_non_negative(e_perp)
         & n_dot_l.simd_ge(-T::ONE)
         & n_dot_l.simd_le(T::ONE);
-    let lit = (f * e_perp * n_dot_l).min(T::MAX);
+    // e n.l <= e cannot overflow, so f (e n.l) overflows only where the true product does.
+    let lit = (f * (e_perp * n_dot_l) * k).min(T::MAX);
     nan_unless(
         ok,
         T::select(n_dot_l.simd_gt(T::ZERO), lit, nan_of(n_dot_l)),
@@ -77,7 +87,7 @@ pub fn radiance<T: Real>(f: T, e_perp: T, n_dot_l: T) -> T {
 #[inline]
 #[must_use]
 pub fn radiance_pi<T: Real>(f: T, c_light: T, n_dot_l: T) -> T {
-    radiance(f * T::PI, c_light, n_dot_l)
+    reflected(f, c_light, n_dot_l, T::PI)
 }
 
 /// [`radiance_pi`] per colour channel: an RGB BRDF value times an RGB light colour.
@@ -105,8 +115,8 @@ pub fn irradiance<T: Real>(e_perp: T, n_dot_l: T) -> T {
 /// at the size of a real bulb (Lagarde and de Rousiers use 1 cm) keeps it finite.
 ///
 /// Domain: d >= 0 (+inf allowed), d_min > 0 finite (NaN otherwise). Edges: d = 0 gives
-/// 1 / d_min^2; d = +inf gives 0. The result overflows to +inf only where d_min^2 underflows
-/// (d_min below about 1e-19 in f32), which the domain's "bulb size" excludes in practice.
+/// 1 / d_min^2; d = +inf gives 0. Where d_min^2 underflows (d_min below about 1e-19 in f32)
+/// the result is capped at the largest finite value instead of +inf.
 ///
 /// Source: Lagarde and de Rousiers 2014, "Moving Frostbite to Physically Based Rendering 3.0",
 /// SIGGRAPH course, section 4.3.3 (listing 24).
@@ -115,7 +125,7 @@ pub fn irradiance<T: Real>(e_perp: T, n_dot_l: T) -> T {
 pub fn inverse_square<T: Real>(distance: T, min_distance: T) -> T {
     let ok = distance.simd_ge(T::ZERO) & min_distance.simd_gt(T::ZERO) & min_distance.is_finite();
     let d = distance.max(min_distance);
-    nan_unless(ok, (d * d).recip())
+    nan_unless(ok, (d * d).recip().min(T::MAX))
 }
 
 /// The smooth window saturate(1 - (d/r)^4)^2 that takes a falloff to exactly 0 at the light's
@@ -180,6 +190,7 @@ pub fn windowed_inverse_square<T: Real>(distance: T, radius: T, min_distance: T)
 /// Edges: d = 0 gives 1 / k_c; d = +inf gives 0 unless k_l = k_q = 0 (then 1 / k_c: a
 /// term with a zero coefficient contributes 0, not 0 x inf). k_c = 1, k_l = 0, k_q = 1 is the
 /// inverse square law softened at d < 1. A general numerator c_0 / (...) is a scale of this.
+/// Where 1 / k_c overflows (a subnormal k_c) the result is capped at the largest finite value.
 ///
 /// Source: the OpenGL 1.x fixed-function lighting equation (Segal and Akeley, "The OpenGL
 /// Graphics System: A Specification", version 1.5, section 2.14.1), also Direct3D 9's
@@ -201,7 +212,8 @@ pub fn polynomial<T: Real>(distance: T, constant: T, linear: T, quadratic: T) ->
         quadratic * distance * distance,
         T::ZERO,
     );
-    nan_unless(ok, (constant + lin + quad).recip())
+    // 1 / k_c overflows for a subnormal k_c: capped at the largest finite value.
+    nan_unless(ok, (constant + lin + quad).recip().min(T::MAX))
 }
 
 /// The cone falloff of a spot light: t^2 with t = saturate((cos a - cos_outer) / (cos_inner -

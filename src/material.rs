@@ -231,12 +231,14 @@ fn kernel<T: Real>(
         f90_d,
         coupling,
     );
-    let dv = ggx::d(n_dot_h, alpha) * ggx::v_correlated(n_dot_v, n_dot_l, alpha);
+    // D and V are each finite, but their product overflows where both cosines are subnormal
+    // and alpha is at its floor: capped at MAX, as the crate caps every pole.
+    let dv = (ggx::d(n_dot_h, alpha) * ggx::v_correlated(n_dot_v, n_dot_l, alpha)).min(T::MAX);
     let diffuse = mul_rgb(kd, base) * T::FRAC_1_PI;
     // ggx::d turns a NaN n.h into 0 (its horizon select): put the NaN back.
     let nan = nan | n_dot_h.is_nan() | v_dot_h.is_nan();
     let channel = |fc: T, dc: T| {
-        let value = above_horizon(n_dot_v, n_dot_l, fc.mul_add(dv, dc));
+        let value = above_horizon(n_dot_v, n_dot_l, fc.mul_add(dv, dc).min(T::MAX));
         nan_unless(!nan, value)
     };
     V3::new(
@@ -267,7 +269,9 @@ fn any_nan<T: Real>(a: V3<T>, b: V3<T>) -> T::Mask {
 /// Edges: 0 where n.v <= 0 or n.l <= 0; NaN where any input is NaN or any parameter lies
 /// outside its domain (in every case, above or below the horizon); n.h and v.h are clamped
 /// to [0, 1] (n.h <= 0 gives D = 0). Roughness 0 is the floored alpha
-/// [`ALPHA_MIN`](crate::microfacet::ALPHA_MIN), finite everywhere.
+/// [`ALPHA_MIN`](crate::microfacet::ALPHA_MIN), finite everywhere: where both cosines are
+/// near 0 (subnormal in f32) D V and f are capped at the largest finite value, never inf
+/// (`cargo test --test material_stability -- --nocapture` sweeps the parameter extremes).
 ///
 /// Accuracy: f32 within 12 ulps (relative) of f64 on the same inputs, 5.6 measured over
 /// cosines down to 1e-4; 1 - F is formed from complements, so grazing half vectors and F0
@@ -549,10 +553,7 @@ impl<T: Real> MetallicRoughness<T> {
     /// The isotropic GGX of the specular lobe.
     #[inline]
     fn ggx(&self) -> Ggx<T> {
-        Ggx {
-            alpha_x: self.alpha,
-            alpha_y: self.alpha,
-        }
+        Ggx::new_unchecked(self.alpha, self.alpha)
     }
 
     /// Probability of sampling the specular lobe for the view `wo`: P = S / (S + D), the
@@ -564,7 +565,7 @@ impl<T: Real> MetallicRoughness<T> {
     /// of kd base_color, with kd evaluated at the Schlick weight 1/21, the cosine-weighted
     /// hemispherical average of (1 - c)^5: the diffuse lobe sees v.h spread over its whole
     /// hemisphere, not n.v, so at grazing view its weight stays near its average while F(n.v)
-    /// goes to 1. NaN where wo.z is NaN.
+    /// goes to 1. NaN where a component of wo is NaN.
     #[inline]
     #[must_use]
     pub fn specular_probability(&self, wo: V3<T>) -> T {
@@ -598,8 +599,9 @@ impl<T: Real> MetallicRoughness<T> {
         let no_specular = self.metallic.simd_eq(T::ZERO) & f90_d.simd_eq(T::ZERO);
         let p = T::select(d.simd_eq(T::ZERO), T::ONE, p);
         let p = T::select(no_specular, T::ZERO, p);
-        // The selects above would turn a NaN view into a plausible probability.
-        nan_unless(!wo.z.is_nan(), p)
+        // The selects above would turn a NaN view into a plausible probability, and only wo.z
+        // reaches them: a NaN in any component of wo gives NaN.
+        nan_unless(!any_nan(wo, wo), p)
     }
 
     /// The one-sample MIS pdf (solid angle) of [`sample`](Self::sample):
@@ -637,7 +639,8 @@ impl<T: Real> MetallicRoughness<T> {
     /// reflects a grazing view downwards). It is returned as drawn, with its true pdf > 0;
     /// [`eval`](Self::eval) is 0 there, so its weight is 0 and the path ends (pbrt-v4 returns
     /// no sample in that case, which is the same estimator). wo at or below the horizon: the
-    /// BRDF is 0 and every weight is 0.
+    /// BRDF is 0 and every weight is 0. A NaN in any component of wo, or in u1 or u2, gives a
+    /// NaN direction and pdf.
     #[inline]
     #[must_use]
     pub fn sample(&self, wo: V3<T>, u1: T, u2: T) -> (V3<T>, T) {
@@ -652,6 +655,14 @@ impl<T: Real> MetallicRoughness<T> {
         let (m, _) = sampling::ggx_vndf(&self.ggx(), wo, u, u2);
         let (wi_diff, _) = sampling::cosine_hemisphere(u, u2);
         let wi = V3::select(specular, wo.reflect(m), wi_diff);
+        // A diffuse wi does not depend on wo: a NaN view must still give a NaN direction.
+        let bad = any_nan(wo, wo);
+        let nan = T::splat(f64::NAN);
+        let wi = V3::new(
+            T::select(bad, nan, wi.x),
+            T::select(bad, nan, wi.y),
+            T::select(bad, nan, wi.z),
+        );
         (wi, self.pdf(wo, wi))
     }
 

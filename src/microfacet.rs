@@ -6,6 +6,7 @@
 //! are written once here from `d`, `lambda` and `cos_lambda`, so both models share one
 //! height-correlated G2 and one guarded visibility.
 
+use crate::domain::{any_nan3, nan_unless, nan_where};
 use crate::error::{ParamError, require};
 use crate::real::Real;
 use crate::vec3::V3;
@@ -13,11 +14,24 @@ use crate::vec3::V3;
 /// The smallest alpha the kernels evaluate with; smaller (including 0) is clamped up to it.
 ///
 /// Why 1e-4: the GGX peak D = 1 / (pi alpha^2) is then 3.2e7 and Beckmann's 1 / (pi alpha^2)
-/// likewise, and D V F stays below 1e15, far inside f32's range (3.4e38) and f16-free paths;
+/// likewise, and D V F stays below 1e15, far inside f32's range (3.4e38);
 /// alpha^2 = 1e-8 is a normal f32. The lobe is then 1e-4 rad wide: narrower than a pixel's
 /// footprint in any renderer, so the clamp changes no image, and its directional albedo is
-/// that of a mirror (the energy is right, as `tests/stability_microfacet.rs` checks).
+/// that of a mirror.
 pub const ALPHA_MIN: f64 = 1e-4;
+
+/// The largest alpha the kernels evaluate with; larger finite values are clamped down to it.
+///
+/// Why 1e4 (the mirror image of [`ALPHA_MIN`]): every intermediate of every kernel stays a
+/// normal f32 up to it. The GGX D of a unit normal m has the denominator
+/// pi alpha_x alpha_y (x^2/alpha_x^2 + y^2/alpha_y^2 + z^2)^2 >= pi / alpha^2, which
+/// underflows f32 near alpha = 1e10 (where D turned into inf and NaN); alpha^4 = 1e16, the
+/// square of the peak denominator alpha^2 cos^2, overflows f32 only above 4e9; and the
+/// stretched view direction of the visible-normal samplers, (alpha x, alpha y, z), has a
+/// length^2 that overflows at 1.8e19. Physically alpha = 1e4 is an RMS slope of 89.994
+/// degrees: the surface is already at the alpha -> inf limit (every normal at the horizon),
+/// so the clamp changes no value a renderer can see.
+pub const ALPHA_MAX: f64 = 1e4;
 
 /// A microfacet normal distribution with its Smith masking function.
 ///
@@ -25,30 +39,38 @@ pub const ALPHA_MIN: f64 = 1e-4;
 /// Heitz 2014, "Understanding the Masking-Shadowing Function in Microfacet-Based BRDFs"
 /// (JCGT 3(2)), whose equations the provided methods implement.
 pub trait Microfacet<T: Real> {
-    /// NDF D(m); 0 for m.z <= 0. Normalized: integral of D(m) m.z dm = 1.
+    /// NDF D(m); 0 for m.z <= 0. Normalized: integral of D(m) m.z dm = 1. Domain: m a unit
+    /// vector; NaN in any component gives NaN.
     fn d(&self, m: V3<T>) -> T;
 
-    /// Smith Lambda(w) >= 0, a function of |w.z| (symmetric under w -> -w); +inf at the
-    /// horizon (w.z = 0), 0 at the normal.
+    /// Smith Lambda(w) >= 0, a function of |w.z| (symmetric under w -> -w); its pole at the
+    /// horizon (w.z = 0) is capped at the largest finite value; 0 at the normal. NaN in any
+    /// component gives NaN.
     fn lambda(&self, w: V3<T>) -> T;
 
-    /// |w.z| Lambda(w), computed so that it stays finite at the horizon (where Lambda = inf
-    /// and |w.z| = 0): the visibility term needs this product, not Lambda itself.
+    /// |w.z| Lambda(w), computed so that it stays finite at the horizon (where Lambda has its
+    /// pole and |w.z| = 0): the visibility term needs this product, not Lambda itself. NaN in
+    /// any component gives NaN.
     fn cos_lambda(&self, w: V3<T>) -> T;
 
     /// Smith masking G1(w) = 1 / (1 + Lambda(w)) (Heitz 2014, eq. 43): 1 at the normal, 0 at
-    /// the horizon.
+    /// the horizon (where Lambda is capped at MAX); NaN for NaN input. Within
+    /// 1 ULP of 1 / (1 + Lambda) computed exactly from the model's Lambda.
     #[inline]
     #[must_use]
     fn g1(&self, w: V3<T>) -> T {
-        (T::ONE + self.lambda(w)).recip()
+        let l = self.lambda(w);
+        // At the capped pole 1 / (1 + MAX) would be a subnormal, not the limit 0.
+        T::select(l.simd_eq(T::MAX), T::ZERO, (T::ONE + l).recip())
     }
 
     /// Height-correlated masking-shadowing G2 = 1 / (1 + Lambda(wo) + Lambda(wi)) (Heitz 2014,
-    /// eq. 99). 0 when either direction is at the horizon.
+    /// eq. 99). 0 when either direction is at the horizon; NaN for NaN input.
     #[inline]
     #[must_use]
     fn g2_correlated(&self, wo: V3<T>, wi: V3<T>) -> T {
+        // Each Lambda is capped at MAX; the sum may still overflow to inf, whose reciprocal is
+        // the right limit 0.
         (T::ONE + self.lambda(wo) + self.lambda(wi)).recip()
     }
 
@@ -67,31 +89,38 @@ pub trait Microfacet<T: Real> {
     ///
     /// Domain: unit vectors. Edges: finite whenever one of the cosines is non-zero; 0 when both
     /// are 0 (the limit along any path is unbounded, and the BRDF is then multiplied by a zero
-    /// cosine anyway); capped at the largest finite value instead of overflowing to inf.
+    /// cosine anyway); capped at the largest finite value instead of overflowing to inf. NaN
+    /// in any component of either vector gives NaN.
     #[inline]
     #[must_use]
     fn v_correlated(&self, wo: V3<T>, wi: V3<T>) -> T {
         let (co, ci) = (wo.z.abs(), wi.z.abs());
         let den = co * ci + ci * self.cos_lambda(wo) + co * self.cos_lambda(wi);
         let den4 = T::splat(4.0) * den;
-        T::select(den4.simd_gt(T::ZERO), den4.recip().min(T::MAX), T::ZERO)
+        let v = T::select(den4.simd_gt(T::ZERO), den4.recip().min(T::MAX), T::ZERO);
+        nan_where(any_nan3(wo) | any_nan3(wi) | den.is_nan(), v)
     }
 
     /// Distribution of visible normals D_wo(m) = G1(wo) max(0, wo.m) D(m) / |wo.z| (Heitz
-    /// 2014, eq. 38). It integrates to 1 over m for every wo with wo.z != 0; 0 when wo.z = 0.
+    /// 2014, eq. 38). It integrates to 1 over m for every wo with wo.z != 0; 0 when wo.z = 0;
+    /// capped at the largest finite value; NaN for NaN in any component of either vector.
     #[inline]
     #[must_use]
     fn d_visible(&self, wo: V3<T>, m: V3<T>) -> T {
         let c = wo.z.abs();
         // G1 / |wo.z| = 1 / (|wo.z| + |wo.z| Lambda): finite at the horizon.
-        let g1_over_cos = (c + self.cos_lambda(wo)).recip();
+        let cl = self.cos_lambda(wo);
+        let g1_over_cos = (c + cl).recip();
         let v = T::select(c.simd_gt(T::ZERO), g1_over_cos, T::ZERO);
-        v * wo.dot(m).max(T::ZERO) * self.d(m)
+        // Each factor is finite; the product of a large 1 / |wo.z| and a large D may not be.
+        let value = (v * wo.dot(m).max(T::ZERO)).min(T::MAX) * self.d(m);
+        nan_where(any_nan3(wo) | cl.is_nan(), value.min(T::MAX))
     }
 }
 
 /// The constructor check shared by every distribution: both alphas finite and >= 0 in every
 /// lane (comparisons are false for NaN, so NaN is rejected too).
+#[cfg_attr(not(any(feature = "ggx", feature = "beckmann")), allow(dead_code))]
 pub(crate) fn validate_alphas<T: Real>(alpha_x: T, alpha_y: T) -> Result<(), ParamError> {
     const DOMAIN: &str = "finite and >= 0";
     require::<T>(
@@ -106,26 +135,203 @@ pub(crate) fn validate_alphas<T: Real>(alpha_x: T, alpha_y: T) -> Result<(), Par
     )
 }
 
-/// `max(alpha, ALPHA_MIN)`; NaN propagates.
+/// True where alpha is in the documented domain [0, +inf) (false for NaN, negatives, +inf).
 #[inline]
-pub(crate) fn floor_alpha<T: Real>(alpha: T) -> T {
-    alpha.max(T::splat(ALPHA_MIN))
+pub(crate) fn alpha_ok<T: Real>(alpha: T) -> T::Mask {
+    alpha.simd_ge(T::ZERO) & alpha.simd_lt(T::INFINITY)
 }
 
-/// Perceptual roughness r in [0, 1] to alpha = r^2, with alpha floored at [`ALPHA_MIN`] (so
-/// r below 0.01 gives the floor). The square makes a linear roughness slider perceptually
-/// even (Burley 2012, "Physically-Based Shading at Disney"; Karis 2013, "Real Shading in
-/// Unreal Engine 4"). r > 1 passes through squared; NaN propagates.
+/// alpha clamped to [`ALPHA_MIN`], [`ALPHA_MAX`]; NaN for alpha < 0, NaN or +inf (a parameter
+/// outside its domain is never replaced by another parameter's value).
+#[inline]
+pub(crate) fn clamp_alpha<T: Real>(alpha: T) -> T {
+    nan_unless(
+        alpha_ok(alpha),
+        alpha.clamp(T::splat(ALPHA_MIN), T::splat(ALPHA_MAX)),
+    )
+}
+
+/// Perceptual roughness r to alpha = r^2, clamped to [[`ALPHA_MIN`], [`ALPHA_MAX`]] (so r
+/// below 0.01 gives ALPHA_MIN). The square makes a linear roughness slider perceptually even
+/// (Burley 2012, "Physically-Based Shading at Disney"; Karis 2013, "Real Shading in Unreal
+/// Engine 4"). Domain: r in [0, +inf) finite (r > 1 passes through squared, up to the
+/// clamp); r < 0, NaN or +inf gives NaN. Exact: one rounding of r^2.
 #[inline]
 #[must_use]
 pub fn alpha_from_perceptual<T: Real>(roughness: T) -> T {
-    floor_alpha(roughness * roughness)
+    // r = 100 = sqrt(ALPHA_MAX) already gives the largest alpha; clamping r first keeps r^2
+    // finite for every finite r.
+    let r = roughness.min(T::splat(100.0));
+    nan_unless(alpha_ok(roughness), clamp_alpha(r * r))
 }
 
-/// alpha to perceptual roughness r = sqrt(alpha) (the inverse of [`alpha_from_perceptual`] above
-/// the floor). Domain alpha >= 0; negative gives 0.
+/// alpha to perceptual roughness r = sqrt(alpha) (the inverse of [`alpha_from_perceptual`]
+/// between the clamps). Domain alpha in [0, +inf); alpha < 0 or NaN gives NaN, +inf gives
+/// +inf. Correctly rounded (one square root).
 #[inline]
 #[must_use]
 pub fn perceptual_from_alpha<T: Real>(alpha: T) -> T {
-    alpha.sqrt_nonneg()
+    nan_unless(alpha.simd_ge(T::ZERO), alpha.sqrt())
+}
+
+/// Veltkamp's split of `a` into a high part with half the significand bits and the exact
+/// rest (Dekker 1971, "A floating-point technique for extending the available precision").
+/// |a| must stay below MAX / 4097 (f32) or MAX / 2^27 (f64), else the product overflows.
+#[cfg_attr(not(any(feature = "ggx", feature = "beckmann")), allow(dead_code))]
+#[inline]
+fn split<T: Real>(a: T) -> (T, T) {
+    // 2^ceil(p / 2) + 1 for the p-bit significand: 2^12 + 1 (f32), 2^27 + 1 (f64).
+    let eps: f64 = T::EPSILON.lane(0).into();
+    let factor = if eps > 1e-10 { 4097.0 } else { 134_217_729.0 };
+    let t = T::splat(factor) * a;
+    let hi = t - (t - a);
+    (hi, a - hi)
+}
+
+/// The exact product a b = p + e (Dekker's two-product, without FMA, so it is the same on every
+/// target and lane type). Exact while a b and the partial products neither overflow nor
+/// underflow.
+#[cfg_attr(not(any(feature = "ggx", feature = "beckmann")), allow(dead_code))]
+#[inline]
+pub(crate) fn two_prod<T: Real>(a: T, b: T) -> (T, T) {
+    let p = a * b;
+    let (ah, al) = split(a);
+    let (bh, bl) = split(b);
+    let e = al * bl - (((p - ah * bh) - al * bh) - ah * bl);
+    (p, e)
+}
+
+/// The exact sum a + b = s + e (Knuth's two-sum, no ordering needed).
+#[cfg_attr(not(any(feature = "ggx", feature = "beckmann")), allow(dead_code))]
+#[inline]
+pub(crate) fn two_sum<T: Real>(a: T, b: T) -> (T, T) {
+    let s = a + b;
+    let bb = s - a;
+    (s, (a - (s - bb)) + (b - bb))
+}
+
+/// A positive value carried as `hi (1 + rel)`: `rel` is the relative correction that the
+/// error-free transformations above recover from each rounding (|rel| stays near one ULP,
+/// so its own products are second order). Used where a rounding would otherwise be
+/// amplified: squared (the GGX D denominator) or multiplied by a large exponent (Beckmann's
+/// exp(-E)).
+#[cfg_attr(not(any(feature = "ggx", feature = "beckmann")), allow(dead_code))]
+#[derive(Clone, Copy)]
+pub(crate) struct Dw<T> {
+    pub(crate) hi: T,
+    pub(crate) rel: T,
+}
+
+/// `e / p`, 0 where `p` is 0 (an exact zero has no relative error).
+#[cfg_attr(not(any(feature = "ggx", feature = "beckmann")), allow(dead_code))]
+#[inline]
+pub(crate) fn ratio<T: Real>(e: T, p: T) -> T {
+    T::select(p.simd_eq(T::ZERO), T::ZERO, e / p)
+}
+
+#[cfg_attr(not(any(feature = "ggx", feature = "beckmann")), allow(dead_code))]
+impl<T: Real> Dw<T> {
+    /// A value with no rounding error.
+    #[inline]
+    pub(crate) fn exact(x: T) -> Self {
+        Self {
+            hi: x,
+            rel: T::ZERO,
+        }
+    }
+
+    /// pi = `T::PI` (1 + rel).
+    #[inline]
+    pub(crate) fn pi() -> Self {
+        let pi_t: f64 = T::PI.lane(0).into();
+        // pi - fl64(pi) = 1.2246e-16.
+        let rel = ((core::f64::consts::PI - pi_t) + 1.224_646_799_147_353_2e-16) / pi_t;
+        Self {
+            hi: T::PI,
+            rel: T::splat(rel),
+        }
+    }
+
+    /// The product, its rounding recovered by Dekker's two-product.
+    #[inline]
+    pub(crate) fn mul(self, o: Self) -> Self {
+        let (p, e) = two_prod(self.hi, o.hi);
+        Self {
+            hi: p,
+            rel: self.rel + o.rel + ratio(e, p),
+        }
+    }
+
+    /// The quotient, its rounding recovered from the exact remainder hi - q o.hi.
+    #[inline]
+    pub(crate) fn div(self, o: Self) -> Self {
+        let q = self.hi / o.hi;
+        let (t, u) = two_prod(q, o.hi);
+        let r = (self.hi - t) - u;
+        Self {
+            hi: q,
+            rel: self.rel - o.rel + ratio(r, self.hi),
+        }
+    }
+
+    /// Sum of two non-negative values.
+    #[inline]
+    pub(crate) fn add(self, o: Self) -> Self {
+        let (s, e) = two_sum(self.hi, o.hi);
+        Self {
+            hi: s,
+            rel: ratio(e + self.hi * self.rel + o.hi * o.rel, s),
+        }
+    }
+
+    /// The absolute low part `hi rel`, 0 where it is not finite (hi = 0 or inf at a pole,
+    /// where the value is exact anyway).
+    #[inline]
+    pub(crate) fn lo(self) -> T {
+        let lo = self.hi * self.rel;
+        T::select(lo.is_finite(), lo, T::ZERO)
+    }
+
+    /// The square root, the rounding of `sqrt(hi)` recovered from the exact residual
+    /// hi - s^2: sqrt(hi (1 + rel)) = s (1 + (hi - s^2) / (2 s^2) + rel / 2) to first order.
+    /// Where hi is below the smallest normal (its rel made by inexact two-products) or 0, the
+    /// correction is dropped.
+    #[cfg_attr(not(feature = "ggx"), allow(dead_code))]
+    #[inline]
+    pub(crate) fn sqrt(self) -> Self {
+        let s = self.hi.sqrt();
+        let (t, u) = two_prod(s, s);
+        let rel = ((self.hi - t) - u) / (T::TWO * self.hi) + self.rel * T::HALF;
+        let usable = rel.is_finite() & self.hi.simd_ge(T::MIN_POSITIVE);
+        Self {
+            hi: s,
+            rel: T::select(usable, rel, T::ZERO),
+        }
+    }
+
+    /// hi (1 + rel) rounded once: the value to return. The product adds at most one
+    /// rounding of the result's size to the correction, so this is within 0.5 ULP plus
+    /// the second-order terms.
+    #[inline]
+    pub(crate) fn value(self) -> T {
+        self.hi + self.lo()
+    }
+}
+
+/// sin^2 = 1 - c^2 = (1 - c)(1 + c) for c in [0, 1], carried to twice the working precision
+/// (both factors exact by two-sums, their product by two-product). Near c = 1 a plain
+/// 1 - fl(c^2) keeps the rounding of c^2, which is relatively huge against the small
+/// sin^2; the factored form has none.
+#[cfg_attr(not(any(feature = "ggx", feature = "beckmann")), allow(dead_code))]
+#[inline]
+pub(crate) fn sin2_dw<T: Real>(c: T) -> Dw<T> {
+    let (d, dl) = two_sum(T::ONE, -c);
+    let (p, pl) = two_sum(T::ONE, c);
+    let (h, e) = two_prod(d, p);
+    let lo = e + (d * pl + dl * p);
+    let s = h + lo;
+    Dw {
+        hi: s,
+        rel: ratio((h - s) + lo, s),
+    }
 }

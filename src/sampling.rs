@@ -8,9 +8,15 @@
 //! would reach an infinite slope). Samplers are generic over [`Real`] and branch-free on lane
 //! values: a lane's output equals the scalar output for that lane's inputs.
 //!
+//! Bad input: a NaN in `u1`, `u2` or any component of `wo` gives a NaN direction (all three
+//! components) and a NaN pdf, never a plausible normal. alpha is clamped to [ALPHA_MIN,
+//! ALPHA_MAX] (`crate::microfacet`), so every finite alpha the constructors accept samples
+//! unit normals with finite pdfs (`tests/microfacet_domains.rs`).
+//!
 //! The pdf of the reflected direction wi = reflect(wo, m) is pdf_m / (4 |wo.m|) ([`reflect_pdf`];
 //! Walter et al. 2007, eq. 14).
 
+use crate::domain::{any_nan3, nan_where};
 use crate::real::Real;
 use crate::vec3::V3;
 
@@ -19,13 +25,22 @@ use crate::beckmann::Beckmann;
 #[cfg(feature = "ggx")]
 use crate::ggx::Ggx;
 #[cfg(any(feature = "ggx", feature = "beckmann"))]
-use crate::microfacet::{Microfacet, floor_alpha};
+use crate::microfacet::Microfacet;
 
 /// Clamps a uniform sample into [0, 1 - epsilon/2]: the largest float below 1 for u >= 1,
 /// so mappings with a pole at u = 1 stay finite. NaN propagates.
 #[inline]
 fn clamp_u<T: Real>(u: T) -> T {
     u.clamp(T::ZERO, T::ONE - T::EPSILON * T::HALF)
+}
+
+/// The sample, or a NaN direction (all three components) and a NaN pdf where `bad` holds: the
+/// normalizations with a fallback direction would otherwise turn NaN input into a plausible
+/// unit vector.
+#[inline]
+fn nan_sample<T: Real>(bad: T::Mask, m: V3<T>, pdf: T) -> (V3<T>, T) {
+    let nan = T::splat(f64::NAN);
+    (V3::select(bad, V3::splat(nan), m), T::select(bad, nan, pdf))
 }
 
 /// A direction on the cosine-weighted upper hemisphere (Malley's method: a uniform point on the
@@ -40,24 +55,26 @@ pub fn cosine_hemisphere<T: Real>(u1: T, u2: T) -> (V3<T>, T) {
     let phi = T::TWO * T::PI * u2;
     let z = (T::ONE - u1).sqrt_nonneg();
     let w = V3::new(r * phi.cos(), r * phi.sin(), z);
-    (w, z * T::FRAC_1_PI)
+    nan_sample(u1.is_nan() | u2.is_nan(), w, z * T::FRAC_1_PI)
 }
 
 /// pdf of [`cosine_hemisphere`]: max(0, w.z) / pi.
 #[inline]
 #[must_use]
 pub fn cosine_hemisphere_pdf<T: Real>(w: V3<T>) -> T {
-    w.z.max(T::ZERO) * T::FRAC_1_PI
+    nan_where(any_nan3(w), w.z.max(T::ZERO) * T::FRAC_1_PI)
 }
 
 /// pdf of a reflected direction whose half vector m was drawn with pdf `pdf_m`:
 /// pdf_m / (4 |v.h|) (the Jacobian of wi = 2 (wo.m) m - wo; Walter et al. 2007, eq. 14).
-/// 0 where v.h = 0.
+/// Domain: pdf_m in [0, +inf), v_dot_h in [-1, 1]. 0 where v.h = 0; capped at the largest
+/// finite value; NaN for NaN input or a negative pdf_m.
 #[inline]
 #[must_use]
 pub fn reflect_pdf<T: Real>(pdf_m: T, v_dot_h: T) -> T {
     let den = T::splat(4.0) * v_dot_h.abs();
-    T::select(den.simd_gt(T::ZERO), pdf_m / den, T::ZERO)
+    let v = T::select(den.simd_gt(T::ZERO), (pdf_m / den).min(T::MAX), T::ZERO);
+    nan_where(!pdf_m.simd_ge(T::ZERO) | v_dot_h.is_nan(), v)
 }
 
 /// Microfacet normal from a slope (sx, sy) of the unit-roughness distribution, stretched by
@@ -77,15 +94,15 @@ fn normal_from_slope<T: Real>(sx: T, sy: T, ax: T, ay: T) -> V3<T> {
 #[must_use]
 pub fn ggx_d_cos<T: Real>(ggx: &Ggx<T>, u1: T, u2: T) -> (V3<T>, T) {
     let (u1, u2) = (clamp_u(u1), clamp_u(u2));
+    let (ax, ay) = ggx.clamped_alphas();
     let r = (u1 / (T::ONE - u1)).sqrt();
     let phi = T::TWO * T::PI * u2;
-    let m = normal_from_slope(
-        r * phi.cos(),
-        r * phi.sin(),
-        floor_alpha(ggx.alpha_x),
-        floor_alpha(ggx.alpha_y),
-    );
-    (m, d_cos_pdf(ggx, m))
+    let m = normal_from_slope(r * phi.cos(), r * phi.sin(), ax, ay);
+    nan_sample(
+        u1.is_nan() | u2.is_nan() | ax.is_nan() | ay.is_nan(),
+        m,
+        d_cos_pdf(ggx, m),
+    )
 }
 
 /// A Beckmann microfacet normal with pdf D(m) cos(theta_m): slope radius
@@ -96,15 +113,12 @@ pub fn ggx_d_cos<T: Real>(ggx: &Ggx<T>, u1: T, u2: T) -> (V3<T>, T) {
 #[must_use]
 pub fn beckmann_d_cos<T: Real>(beckmann: &Beckmann<T>, u1: T, u2: T) -> (V3<T>, T) {
     let (u1, u2) = (clamp_u(u1), clamp_u(u2));
+    let (ax, ay) = beckmann.clamped_alphas();
     let r = (-(T::ONE - u1).ln()).sqrt_nonneg();
     let phi = T::TWO * T::PI * u2;
-    let m = normal_from_slope(
-        r * phi.cos(),
-        r * phi.sin(),
-        floor_alpha(beckmann.alpha_x),
-        floor_alpha(beckmann.alpha_y),
-    );
-    (m, d_cos_pdf(beckmann, m))
+    let m = normal_from_slope(r * phi.cos(), r * phi.sin(), ax, ay);
+    let bad = u1.is_nan() | u2.is_nan() | ax.is_nan() | ay.is_nan();
+    nan_sample(bad, m, d_cos_pdf(beckmann, m))
 }
 
 /// pdf D(m) max(0, m.z) of `ggx_d_cos` and `beckmann_d_cos` (each behind its feature).
@@ -141,7 +155,7 @@ fn stretch<T: Real>(wo: V3<T>, ax: T, ay: T) -> V3<T> {
 #[must_use]
 pub fn ggx_vndf<T: Real>(ggx: &Ggx<T>, wo: V3<T>, u1: T, u2: T) -> (V3<T>, T) {
     let (u1, u2) = (clamp_u(u1), clamp_u(u2));
-    let (ax, ay) = (floor_alpha(ggx.alpha_x), floor_alpha(ggx.alpha_y));
+    let (ax, ay) = ggx.clamped_alphas();
     let vh = stretch(wo, ax, ay);
     // Orthonormal basis around vh; at vh = +z (normal view) any tangent works.
     let len2 = vh.x.mul_add(vh.x, vh.y * vh.y);
@@ -162,7 +176,8 @@ pub fn ggx_vndf<T: Real>(ggx: &Ggx<T>, wo: V3<T>, u1: T, u2: T) -> (V3<T>, T) {
     let lift = (T::ONE - p1 * p1 - p2 * p2).sqrt_nonneg();
     let nh = t1 * p1 + t2 * p2 + vh * lift;
     let m = V3::new(ax * nh.x, ay * nh.y, nh.z.max(T::ZERO)).normalize_or(V3::unit_z());
-    (m, visible_normal_pdf(ggx, wo, m))
+    let bad = any_nan3(wo) | u1.is_nan() | u2.is_nan() | ax.is_nan() | ay.is_nan();
+    nan_sample(bad, m, visible_normal_pdf(ggx, wo, m))
 }
 
 /// A GGX visible normal (pdf D_wo(m)) by the spherical-cap method of Dupuy and Benyoub 2023,
@@ -175,7 +190,7 @@ pub fn ggx_vndf<T: Real>(ggx: &Ggx<T>, wo: V3<T>, u1: T, u2: T) -> (V3<T>, T) {
 #[must_use]
 pub fn ggx_vndf_spherical_cap<T: Real>(ggx: &Ggx<T>, wo: V3<T>, u1: T, u2: T) -> (V3<T>, T) {
     let (u1, u2) = (clamp_u(u1), clamp_u(u2));
-    let (ax, ay) = (floor_alpha(ggx.alpha_x), floor_alpha(ggx.alpha_y));
+    let (ax, ay) = ggx.clamped_alphas();
     let v = stretch(wo, ax, ay);
     let phi = T::TWO * T::PI * u1;
     let z = (T::ONE - u2).mul_add(T::ONE + v.z, -v.z);
@@ -183,7 +198,8 @@ pub fn ggx_vndf_spherical_cap<T: Real>(ggx: &Ggx<T>, wo: V3<T>, u1: T, u2: T) ->
     let c = V3::new(sin_theta * phi.cos(), sin_theta * phi.sin(), z);
     let h = c + v;
     let m = V3::new(ax * h.x, ay * h.y, h.z.max(T::ZERO)).normalize_or(V3::unit_z());
-    (m, visible_normal_pdf(ggx, wo, m))
+    let bad = any_nan3(wo) | u1.is_nan() | u2.is_nan() | ax.is_nan() | ay.is_nan();
+    nan_sample(bad, m, visible_normal_pdf(ggx, wo, m))
 }
 
 /// 1 / sqrt(pi).
@@ -257,7 +273,7 @@ pub fn erf_inv<T: Real>(y: T) -> T {
 #[must_use]
 pub fn beckmann_vndf<T: Real>(beckmann: &Beckmann<T>, wo: V3<T>, u1: T, u2: T) -> (V3<T>, T) {
     let (u1, u2) = (clamp_u(u1), clamp_u(u2));
-    let (ax, ay) = (floor_alpha(beckmann.alpha_x), floor_alpha(beckmann.alpha_y));
+    let (ax, ay) = beckmann.clamped_alphas();
     let v = stretch(wo, ax, ay);
     let cos_t = v.z;
     let sin_t = v.x.mul_add(v.x, v.y * v.y).sqrt();
@@ -303,5 +319,6 @@ pub fn beckmann_vndf<T: Real>(beckmann: &Beckmann<T>, wo: V3<T>, u1: T, u2: T) -
     let rx = cos_p * sx - sin_p * sy;
     let ry = sin_p * sx + cos_p * sy;
     let m = normal_from_slope(rx, ry, ax, ay);
-    (m, visible_normal_pdf(beckmann, wo, m))
+    let bad = any_nan3(wo) | u1.is_nan() | u2.is_nan() | ax.is_nan() | ay.is_nan();
+    nan_sample(bad, m, visible_normal_pdf(beckmann, wo, m))
 }

@@ -6,11 +6,16 @@
 //! `apply_vec3a` (glam).
 //!
 //! # Bad input
-//! Every operator first maps its input through [`sanitize`]: NaN -> 0, negative -> 0, and
-//! values above [`MAX_INPUT`] (including +inf) -> `MAX_INPUT`; outputs are clamped to [0, 1].
-//! So one NaN or inf pixel becomes black or the operator's white, never a NaN that spreads
-//! through a blur, identically on scalar and lane paths. Each operator's `f(+inf)` is its value
-//! at `MAX_INPUT`: 1 for all of them except AgX (0.9970, its curve's top; the golden look tints it).
+//! Every operator first maps its input through [`sanitize`]: negative -> 0 and values above
+//! [`MAX_INPUT`] (including +inf) -> `MAX_INPUT`, documented input clamps; outputs are clamped
+//! to [0, 1]. A NaN is not a value to clamp: a NaN channel gives NaN in every output channel
+//! it reaches (its own for per-channel operators, all three for those that mix channels
+//! through luminance or a matrix), identically on scalar and lane paths, so a reference
+//! renderer sees the bug instead of a black pixel. Invalid parameters reaching a free
+//! function (exposure or white point <= 0 or not finite, a hand-built parameter struct
+//! outside its constructor's domain) give NaN. Each operator's `f(+inf)` is its value at
+//! `MAX_INPUT`: 1 for all of them except AgX (0.9970, its curve's top; the golden look tints
+//! it).
 //!
 //! # Channel coupling
 //! Per-channel operators are monotonic in each channel. Operators that use luminance or the
@@ -26,6 +31,7 @@
 //! 6e-5.
 
 use crate::color::{self, ACES_HILL_INPUT, ACES_HILL_OUTPUT, AGX_INSET, AGX_OUTSET, luminance};
+use crate::domain::{any_nan3, nan_unless, nan_where};
 use crate::error::{ParamError, require};
 use crate::real::Real;
 use crate::vec3::V3;
@@ -36,7 +42,8 @@ use glam::{Vec3, Vec3A};
 /// terms (ACES' x^2, Lottes' x^1.6) far from f32 overflow.
 pub const MAX_INPUT: f64 = 1e9;
 
-/// NaN and negative -> 0, above [`MAX_INPUT`] -> `MAX_INPUT`.
+/// The operators' input clamp: negative (and -inf) -> 0, above [`MAX_INPUT`] (and +inf) ->
+/// `MAX_INPUT`; NaN stays NaN.
 #[inline]
 #[must_use]
 pub fn sanitize<T: Real>(x: T) -> T {
@@ -50,13 +57,8 @@ fn sanitize_rgb<T: Real>(c: V3<T>) -> V3<T> {
 
 #[inline]
 fn saturate_rgb<T: Real>(c: V3<T>) -> V3<T> {
-    // `saturate` keeps NaN; sanitize-then-clamp cannot produce one, but map it to 0 anyway so
-    // the output guarantee does not rest on that argument alone.
-    V3::new(
-        color::non_negative(c.x).min(T::ONE),
-        color::non_negative(c.y).min(T::ONE),
-        color::non_negative(c.z).min(T::ONE),
-    )
+    // Clamped to [0, 1]; a NaN (from a NaN input) stays NaN.
+    V3::new(c.x.saturate(), c.y.saturate(), c.z.saturate())
 }
 
 #[inline]
@@ -94,19 +96,29 @@ impl Exposure {
     }
 }
 
-/// EV100 = log2(N^2 / t * 100 / S) (Lagarde and de Rousiers 2014, eq. 12).
+/// EV100 = log2(N^2 / t * 100 / S) (Lagarde and de Rousiers 2014, eq. 12), for f-number N,
+/// shutter time t in seconds and sensitivity S (ISO).
+///
+/// Domain: each argument finite and > 0 (subnormals included); anything else, NaN included,
+/// gives NaN. Evaluated as 2 log2 N - log2 t + log2(100 / S) term by term, so no product
+/// overflows or underflows: the result is finite over the whole domain (within +-2200).
 #[inline]
 #[must_use]
 pub fn ev100_from_camera(aperture: f64, shutter_s: f64, iso: f64) -> f64 {
-    libm::log2(aperture * aperture / shutter_s * 100.0 / iso)
+    let ok = |v: f64| v > 0.0 && v.is_finite();
+    if !(ok(aperture) && ok(shutter_s) && ok(iso)) {
+        return f64::NAN;
+    }
+    2.0 * libm::log2(aperture) - libm::log2(shutter_s) + (libm::log2(100.0) - libm::log2(iso))
 }
 
-/// The exponential exposure curve T(c) = 1 - exp(-c * exposure). T(0) = 0, T(inf) = 1; `exposure`
-/// must be > 0 (not checked: a kernel; validate with [`Exposure`]).
+/// The exponential exposure curve T(c) = 1 - exp(-c * exposure). T(0) = 0, T(inf) = 1.
+/// `exposure` in (0, MAX] ([`Exposure`] builds one); 0, negative, +inf and NaN give NaN.
 #[inline]
 #[must_use]
 pub fn exposure_curve<T: Real>(c: T, exposure: T) -> T {
-    (T::ONE - (-sanitize(c) * exposure).exp()).saturate()
+    let ok = exposure.simd_gt(T::ZERO) & exposure.simd_le(T::MAX);
+    nan_unless(ok, (T::ONE - (-sanitize(c) * exposure).exp()).saturate())
 }
 
 /// Reinhard, Stark, Shirley, Ferwerda 2002, "Photographic Tone Reproduction for Digital
@@ -119,12 +131,16 @@ pub fn reinhard<T: Real>(c: T) -> T {
 }
 
 /// Extended Reinhard (Reinhard et al. 2002, eq. 4) per channel with white point w:
-/// c (1 + c / w^2) / (1 + c), which reaches 1 at c = w (clamped beyond). w > 0.
+/// c (1 + c / w^2) / (1 + c), which reaches 1 at c = w (clamped beyond). w in (0, MAX]; 0,
+/// negative, +inf and NaN give NaN. c / w^2 is formed as (c / w) / w, so a subnormal w
+/// neither overflows w^2 to 0 nor forms 0 / 0 at c = 0.
 #[inline]
 #[must_use]
 pub fn reinhard_extended<T: Real>(c: T, white: T) -> T {
     let c = sanitize(c);
-    (c * (T::ONE + c / (white * white)) / (T::ONE + c)).saturate()
+    let ok = white.simd_gt(T::ZERO) & white.simd_le(T::MAX);
+    let v = (c * (T::ONE + c / white / white) / (T::ONE + c)).saturate();
+    nan_unless(ok, v)
 }
 
 /// Reinhard on luminance: L' = L / (1 + L), colour scaled by L' / L, i.e. c / (1 + L)
@@ -262,6 +278,22 @@ impl HableParams {
         })
     }
 
+    /// True when every field is finite and > 0, the domain [`HableParams::new`] enforces.
+    fn is_valid(&self) -> bool {
+        [
+            self.a,
+            self.b,
+            self.c,
+            self.d,
+            self.e,
+            self.f,
+            self.white,
+            self.exposure_bias,
+        ]
+        .iter()
+        .all(|v| *v > 0.0 && v.is_finite())
+    }
+
     #[inline]
     fn curve<T: Real>(&self, x: T) -> T {
         let s = |v: f64| T::splat(v);
@@ -272,10 +304,14 @@ impl HableParams {
 }
 
 /// Hable's filmic curve ("Uncharted 2"; Hable 2010, "Filmic Tonemapping Operators") per
-/// channel: F(bias c) / F(W), clamped to [0, 1]. F(0) = 0.
+/// channel: F(bias c) / F(W), clamped to [0, 1]. F(0) = 0. Parameters outside
+/// [`HableParams::new`]'s domain (a struct built by hand) give NaN.
 #[inline]
 #[must_use]
 pub fn hable<T: Real>(c: T, p: &HableParams) -> T {
+    if !p.is_valid() {
+        return T::splat(f64::NAN);
+    }
     let x = sanitize(c) * T::splat(p.exposure_bias);
     (p.curve(x) / p.curve(T::splat(p.white))).saturate()
 }
@@ -327,6 +363,20 @@ impl LottesParams {
         Ok(Self::derive(contrast, shoulder, hdr_max, mid_in, mid_out))
     }
 
+    /// True when the public fields are in [`LottesParams::new`]'s domain and b, c are finite.
+    fn is_valid(&self) -> bool {
+        let pos = |v: f64| v > 0.0 && v.is_finite();
+        pos(self.contrast)
+            && pos(self.shoulder)
+            && pos(self.hdr_max)
+            && pos(self.mid_in)
+            && pos(self.mid_out)
+            && self.mid_in < self.hdr_max
+            && self.mid_out < 1.0
+            && self.b.is_finite()
+            && self.c.is_finite()
+    }
+
     /// b and c solve f(mid_in) = mid_out and f(hdr_max) = 1 (Lottes 2016, slide "Generic
     /// Tonemapper").
     fn derive(a: f64, d: f64, hdr_max: f64, mid_in: f64, mid_out: f64) -> Self {
@@ -350,10 +400,14 @@ impl LottesParams {
 
 /// Lottes' curve (Lottes 2016, "Advanced Techniques and Optimization of HDR Color Pipelines",
 /// GDC) per channel: x^a / (x^(a d) b + c), clamped to [0, 1]. Passes through
-/// (mid_in, mid_out) and (hdr_max, 1).
+/// (mid_in, mid_out) and (hdr_max, 1). Parameters outside [`LottesParams::new`]'s domain (a
+/// public field changed by hand) give NaN.
 #[inline]
 #[must_use]
 pub fn lottes<T: Real>(c: T, p: &LottesParams) -> T {
+    if !p.is_valid() {
+        return T::splat(f64::NAN);
+    }
     let x = sanitize(c);
     let xa = x.pow(T::splat(p.contrast));
     let xad = x.pow(T::splat(p.contrast * p.shoulder));
@@ -387,15 +441,42 @@ impl UchimuraParams {
         black: 1.33,
         pedestal: 0.0,
     };
+
+    /// True when every field is finite, P, a, m and c are > 0, l >= 0, and the linear
+    /// section ends below P (S1 = m + a l0 < P, else the shoulder divides by P - S1 <= 0).
+    fn is_valid(&self) -> bool {
+        let all_finite = [
+            self.max_brightness,
+            self.contrast,
+            self.linear_start,
+            self.linear_length,
+            self.black,
+            self.pedestal,
+        ]
+        .iter()
+        .all(|v| v.is_finite());
+        let (pm, a, m, l) = (
+            self.max_brightness,
+            self.contrast,
+            self.linear_start,
+            self.linear_length,
+        );
+        let s1 = m + a * ((pm - m) * l / a);
+        all_finite && pm > 0.0 && a > 0.0 && m > 0.0 && l >= 0.0 && self.black > 0.0 && s1 < pm
+    }
 }
 
 /// Uchimura's "GT" curve (Uchimura 2017, "HDR Theory and Practice", CEDEC): a power toe
 /// m (x/m)^c + b, a linear section m + a (x - m), and an exponential shoulder
 /// P - (P - S1) exp(-a P / (P - S1) (x - S0) / P), blended by smoothstep(0, m, x) and a step at
-/// S0 = m + l0. Per channel, clamped to [0, 1]. f(0) = b.
+/// S0 = m + l0. Per channel, clamped to [0, 1]. f(0) = b. Parameters: every field finite,
+/// P, a, m, c > 0, l >= 0 and m + a l0 < P (the Gran Turismo values qualify); others give NaN.
 #[inline]
 #[must_use]
 pub fn uchimura<T: Real>(c: T, p: &UchimuraParams) -> T {
+    if !p.is_valid() {
+        return T::splat(f64::NAN);
+    }
     let x = sanitize(c);
     let (pm, a, m, l, cc, b) = (
         p.max_brightness,
@@ -442,7 +523,15 @@ pub fn pbr_neutral<T: Real>(c: V3<T>) -> V3<T> {
     let safe_peak = T::select(peak.simd_gt(T::ZERO), peak, T::ONE);
     let scaled = c * (new_peak / safe_peak * g) + V3::splat(new_peak * (T::ONE - g));
     let compress = peak.simd_ge(s(ks));
-    saturate_rgb(V3::select(compress, scaled, c))
+    let out = saturate_rgb(V3::select(compress, scaled, c));
+    // The offset and the peak mix the channels, but `min`/`max` ignore a NaN argument: without
+    // this a NaN in one channel would leave the other two plausible.
+    let bad = any_nan3(c);
+    V3::new(
+        nan_where(bad, out.x),
+        nan_where(bad, out.y),
+        nan_where(bad, out.z),
+    )
 }
 
 /// An AgX look: a CDL-style slope / power / saturation grade applied in AgX's encoded space.
@@ -523,10 +612,14 @@ fn agx_contrast<T: Real>(x: T) -> T {
 /// [`AGX_INSET`], log2 encoding over [-12.47393, 4.026069] EV, the contrast polynomial, the
 /// `look`, [`AGX_OUTSET`], then the 2.2 power the reference uses to return linear values.
 /// Output clamped to [0, 1]; f(0) = 0 (the polynomial's -0.00232 toe is clamped); its top, at
-/// [`MAX_INPUT`] and +inf, is 0.9970.
+/// [`MAX_INPUT`] and +inf, is 0.9970. A look outside [`AgxLook::new`]'s domain (built by
+/// hand) gives NaN.
 #[inline]
 #[must_use]
 pub fn agx<T: Real>(c: V3<T>, look: &AgxLook) -> V3<T> {
+    if AgxLook::new(look.slope, look.power, look.saturation).is_err() {
+        return V3::splat(T::splat(f64::NAN));
+    }
     const MIN_EV: f64 = -12.47393;
     const MAX_EV: f64 = 4.026069;
     let v = color::mul(&AGX_INSET, sanitize_rgb(c));

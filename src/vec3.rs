@@ -75,8 +75,9 @@ impl<T: Real> V3<T> {
         self.length_squared().sqrt()
     }
 
-    /// `self / |self|`; where `|self| = 0` (or is not finite) the lane is `fallback` instead of
-    /// NaN, so a degenerate half vector cannot poison a kernel.
+    /// `self / |self|`; where `|self|` is 0 or infinite the lane is `fallback`, so a degenerate
+    /// half vector (wo = -wi) cannot poison a kernel with a 0 / 0. A NaN component gives NaN in
+    /// all three (the crate's rule: a NaN input is never replaced by a plausible direction).
     #[inline]
     #[must_use]
     pub fn normalize_or(self, fallback: Self) -> Self {
@@ -84,10 +85,12 @@ impl<T: Real> V3<T> {
         let ok = len2.simd_gt(T::ZERO) & len2.is_finite();
         let inv = T::select(ok, len2.sqrt().recip(), T::ZERO);
         let n = self * inv;
+        // len2 is NaN exactly where a component is: the sum of squares of the others cannot be.
+        let pick = |v: T, f: T| crate::domain::nan_where(len2.is_nan(), T::select(ok, v, f));
         Self::new(
-            T::select(ok, n.x, fallback.x),
-            T::select(ok, n.y, fallback.y),
-            T::select(ok, n.z, fallback.z),
+            pick(n.x, fallback.x),
+            pick(n.y, fallback.y),
+            pick(n.z, fallback.z),
         )
     }
 

@@ -30,6 +30,11 @@ fn oetf_of_eotf_is_within_one_ulp_over_a_dense_sweep() {
     let mut worst32 = 0u32;
     for i in 0..=1_000_000 {
         let x = i as f64 / 1e6;
+        // IEC 61966-2-1's pieces leave a seam: (12.92 * 0.0031308, 0.04045] decodes on the
+        // linear piece and re-encodes on the power piece, 2.85e-8 lower (color::srgb_oetf).
+        if x > 12.92 * 0.003_130_8 && x <= color::SRGB_EOTF_BREAK {
+            continue;
+        }
         let y = srgb_oetf(srgb_eotf(x));
         worst64 = worst64.max((y.to_bits() as i64 - x.to_bits() as i64).unsigned_abs());
         let x32 = x as f32;
@@ -64,7 +69,11 @@ fn reference_values() {
 
 #[test]
 fn bad_input_gives_black_on_scalars_and_lanes() {
-    for x in [f32::NAN, -1.0, -0.0, f32::NEG_INFINITY] {
+    // NaN is reported, not clamped.
+    assert!(srgb_oetf(f32::NAN).is_nan() && srgb_eotf(f32::NAN).is_nan());
+    assert!(color::rec709_oetf(f32::NAN).is_nan());
+    assert!(srgb_oetf(f32x8::splat(f32::NAN)).lane(3).is_nan());
+    for x in [-1.0, -0.0, f32::NEG_INFINITY] {
         assert_eq!(srgb_oetf(x), 0.0);
         assert_eq!(srgb_eotf(x), 0.0);
         assert_eq!(color::rec709_oetf(x), 0.0);

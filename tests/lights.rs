@@ -424,3 +424,123 @@ proptest! {
         }
     }
 }
+
+/// Non-negative finite values of `T` from 0 through subnormals to `T::MAX`.
+fn magnitudes<T: Real>() -> Vec<T> {
+    let max: f64 = T::MAX.lane(0).into();
+    let tiny: f64 = T::MIN_POSITIVE.lane(0).into();
+    [
+        0.0,
+        tiny * 1e-3,
+        tiny,
+        1e-30,
+        1e-7,
+        0.01,
+        0.5,
+        1.0,
+        3.0,
+        1e7,
+        1e30,
+        max.sqrt(),
+        max,
+    ]
+    .into_iter()
+    .map(T::splat)
+    .collect()
+}
+
+/// Cosines: +-1, +-0, subnormal, 1e-7, the middle, 1 - 2^-24.
+fn unit_cosines<T: Real>() -> Vec<T> {
+    let tiny: f64 = T::MIN_POSITIVE.lane(0).into();
+    [
+        -1.0,
+        -0.5,
+        -0.0,
+        0.0,
+        tiny * 1e-3,
+        tiny,
+        1e-7,
+        0.5,
+        1.0 - 2f64.powi(-24),
+        1.0,
+    ]
+    .into_iter()
+    .map(T::splat)
+    .collect()
+}
+
+fn in_range<T: Real>(name: &str, x: T, hi: f64, args: &[T]) {
+    for i in 0..T::LANES {
+        let v: f64 = x.lane(i).into();
+        assert!(
+            v.is_finite() && (0.0..=hi).contains(&v),
+            "{name} = {v} outside [0, {hi}] at {args:?}"
+        );
+    }
+}
+
+/// Every light function over the whole of its documented domain (finite parameters up to
+/// `T::MAX`, distances also +inf, cosines in [-1, 1] including +-0 and subnormals): finite and
+/// in its documented range, never inf or NaN.
+fn whole_domain<T: Real>() -> usize {
+    let max: f64 = T::MAX.lane(0).into();
+    let mags = magnitudes::<T>();
+    let cosines = unit_cosines::<T>();
+    let mut distances = mags.clone();
+    distances.push(T::INFINITY);
+    let mut n = 0;
+    for &a in &mags {
+        for &b in &mags {
+            for &c in &cosines {
+                in_range("radiance", lights::radiance(a, b, c), max, &[a, b, c]);
+                in_range("radiance_pi", lights::radiance_pi(a, b, c), max, &[a, b, c]);
+                n += 2;
+            }
+        }
+        for &c in &cosines {
+            in_range("irradiance", lights::irradiance(a, c), max, &[a, c]);
+            n += 1;
+        }
+    }
+    for &d in &distances {
+        for &m in mags.iter().filter(|m| m.lane(0).into() > 0.0) {
+            in_range("inverse_square", lights::inverse_square(d, m), max, &[d, m]);
+            n += 1;
+        }
+        for &r in &distances {
+            in_range("windowed", lights::windowed(d, r), 1.0, &[d, r]);
+            for &m in mags.iter().filter(|m| m.lane(0).into() > 0.0) {
+                let w = lights::windowed_inverse_square(d, r, m);
+                in_range("windowed_inverse_square", w, max, &[d, r, m]);
+                n += 1;
+            }
+        }
+        for &kc in mags.iter().filter(|m| m.lane(0).into() > 0.0) {
+            for &kl in &mags {
+                for &kq in &mags {
+                    let p = lights::polynomial(d, kc, kl, kq);
+                    in_range("polynomial", p, max, &[d, kc, kl, kq]);
+                    n += 1;
+                }
+            }
+        }
+    }
+    for &c in &cosines {
+        for &o in &cosines {
+            for &i in &cosines {
+                if o.lane(0).into() <= i.lane(0).into() {
+                    in_range("spot_cone", lights::spot_cone(c, o, i), 1.0, &[c, o, i]);
+                    n += 1;
+                }
+            }
+        }
+    }
+    n
+}
+
+#[test]
+fn every_function_is_finite_and_in_range_over_its_documented_domain() {
+    let n = whole_domain::<f32>() + whole_domain::<f64>();
+    let l = whole_domain::<f32x8>() + whole_domain::<f64x4>();
+    println!("{n} scalar and {l} lane evaluations finite and in range");
+}

@@ -350,3 +350,97 @@ fn f32_is_within_its_stated_bound_of_f64() {
     // measured 946 ulps (at v.h = 4e-4).
     assert!(ulps <= 12.0, "{ulps} ulps");
 }
+
+/// A unit direction of cosine `c` at azimuth `phi`, in the lane type.
+fn dir_t<T: Real>(c: f64, phi: f64) -> V3<T> {
+    let s = ((1.0 - c) * (1.0 + c)).max(0.0).sqrt();
+    V3::new(
+        T::splat(s * phi.cos()),
+        T::splat(s * phi.sin()),
+        T::splat(c),
+    )
+}
+
+/// The documented extremes of every parameter at once, through `eval`, `pdf` and
+/// `sample_weighted`: roughness 0 (alpha floored at ALPHA_MIN) to 1, IOR 1 (F0 = 0) and the
+/// largest finite float (F0 -> 1), specular factor 0 and 1 with the specular colour at the
+/// largest finite float, cosines down to the smallest subnormal and at or below the horizon,
+/// uniform samples 0 and 1. Every value must be finite and the pdf and BRDF non-negative.
+fn sweep_parameter_extremes<T: Real>(ty: &str) -> (usize, usize) {
+    let s = T::splat;
+    let cos = [
+        1e-45, 1e-38, 1e-30, 1e-20, 1e-10, 1e-7, 1e-4, 0.01, 0.5, 0.999_999, 1.0, 0.0, -0.3,
+    ];
+    let (mut bad, mut n) = (0, 0);
+    for r in [0.0, 1e-30, 1e-7, 1e-3, 0.01, 0.5, 1.0] {
+        for m in [0.0, 0.5, 1.0] {
+            for b in [0.0, 1e-30, 0.5, 1.0] {
+                let base = MetallicRoughness::new(V3::splat(s(b)), s(m), s(r)).unwrap();
+                let mats = [
+                    base,
+                    base.with_ior(s(1.0)).unwrap(),
+                    base.with_ior(T::MAX).unwrap(),
+                    base.with_specular(T::ZERO, V3::splat(T::MAX)).unwrap(),
+                    base.with_specular(T::ONE, V3::splat(T::MAX))
+                        .unwrap()
+                        .with_coupling(DiffuseCoupling::OneMinusF),
+                ];
+                for mat in mats {
+                    for co in cos {
+                        for ci in cos {
+                            for phi in [0.0, 1.0, core::f64::consts::PI] {
+                                let (wo, wi) = (dir_t::<T>(co, 0.3), dir_t::<T>(ci, 0.3 + phi));
+                                let (f, p) = (mat.eval(wo, wi), mat.pdf(wo, wi));
+                                n += 1;
+                                let v: [f64; 4] =
+                                    [f.x.into_f64(), f.y.into_f64(), f.z.into_f64(), p.into_f64()];
+                                if v.iter().any(|x| !x.is_finite() || *x < 0.0) {
+                                    bad += 1;
+                                    println!("{ty}: r {r} m {m} b {b} cos {co} {ci}: {v:?}");
+                                }
+                            }
+                        }
+                        for u1 in [0.0, 0.3, 0.999_999, 1.0] {
+                            for u2 in [0.0, 0.5, 1.0] {
+                                let (wi, pdf, w) =
+                                    mat.sample_weighted(dir_t::<T>(co, 0.3), s(u1), s(u2));
+                                n += 1;
+                                let v =
+                                    [wi.x, wi.y, wi.z, pdf, w.x, w.y, w.z].map(|x| x.into_f64());
+                                if v.iter().any(|x| !x.is_finite()) || v[3] < 0.0 {
+                                    bad += 1;
+                                    println!(
+                                        "{ty}: sample r {r} m {m} b {b} cos {co} u {u1} {u2}: {v:?}"
+                                    );
+                                }
+                            }
+                        }
+                    }
+                }
+            }
+        }
+    }
+    (bad, n)
+}
+
+/// Lane 0 as f64 (all lanes hold the same input here).
+trait IntoF64 {
+    fn into_f64(self) -> f64;
+}
+
+impl<T: Real> IntoF64 for T {
+    fn into_f64(self) -> f64 {
+        self.lane(0).into()
+    }
+}
+
+#[test]
+fn eval_pdf_and_sample_are_finite_at_every_parameter_extreme() {
+    for (ty, (bad, n)) in [
+        ("f32", sweep_parameter_extremes::<f32>("f32")),
+        ("f64", sweep_parameter_extremes::<f64>("f64")),
+    ] {
+        println!("{ty}: {n} evaluations at the parameter extremes, {bad} not finite or negative");
+        assert_eq!(bad, 0, "{ty}");
+    }
+}

@@ -201,9 +201,9 @@ fn documented_edge_values() {
     assert_eq!(ggx::d(1.0, 0.0), ggx::d(1.0, amin));
     assert!((ggx::d(1.0, 0.0) - 1.0 / (core::f64::consts::PI * amin * amin)).abs() < 1e-6);
     assert_eq!(beckmann::d(1.0, 0.0), beckmann::d(1.0, amin));
-    // Lambda is +inf at the horizon, so G1 and the correlated G2 are 0 there.
-    assert_eq!(ggx::lambda(0.0, 0.5), f64::INFINITY);
-    assert_eq!(beckmann::lambda(0.0, 0.5), f64::INFINITY);
+    // Lambda's pole at the horizon is capped at MAX, so G1 and the correlated G2 are 0 there.
+    assert_eq!(ggx::lambda(0.0, 0.5), f64::MAX);
+    assert_eq!(beckmann::lambda(0.0, 0.5), f64::MAX);
     assert_eq!(ggx::g1(0.0, 0.5), 0.0);
     assert_eq!(beckmann::g1(0.0, 0.5), 0.0);
     // At the normal: Lambda = 0, G1 = 1.
@@ -292,8 +292,9 @@ fn f32_kernels_stay_within_their_ulp_bound_of_f64() {
     // - ggx::d, fresnel::schlick: 5. D = alpha^2 / (pi t^2) squares the ~1.5-ulp error of
     //   t = sin^2 + cos^2 alpha^2; Schlick's (1 - c)^5 multiplies the rounding of 1 - c
     //   (for c < 1/2) by 5.
-    // - fresnel::conductor: 11. The complex square root and the two ratios of sums of
-    //   squares round about a dozen times.
+    // - fresnel::conductor: 16 (measured 13). The scaled complex square root and the two
+    //   ratios of sums of squares round about a dozen times; against a 300-bit reference the
+    //   f32 conductor alone is within 8.3 ulps (src/fresnel.rs, "Accuracy").
     // - fresnel::dielectric with eta < 1: 49, at the critical cosine, where F has an infinite
     //   slope in k = c^2 + eta^2 - 1 and the rounding of that sum is amplified (eta > 1 has
     //   no critical angle: 5).
@@ -340,7 +341,7 @@ fn f32_kernels_stay_within_their_ulp_bound_of_f64() {
         ),
         (
             "fresnel::conductor (k = 10 alpha)",
-            11,
+            16,
             |c, a| fresnel::conductor(c, 0.5, 10.0 * a),
             |c, a| fresnel::conductor(c, 0.5, (10.0 * a as f32) as f64),
         ),

@@ -29,9 +29,9 @@
 //! at r = 1); elsewhere it stays below 1, and well below: 0.69 head-on at r = 1, and towards
 //! 0 at grazing for r = 0, where its F_D90 = 0.
 
+use super::dw::Dw;
 use crate::domain::{above_horizon, in_unit, nan_unless};
 use crate::error::{ParamError, require};
-use crate::fresnel::schlick_f90;
 use crate::real::Real;
 use crate::vec3::V3;
 
@@ -51,17 +51,64 @@ fn cos2_d_from_directions<T: Real>(wo: V3<T>, wi: V3<T>) -> T {
     ((T::ONE + wo.dot(wi)) * T::HALF).saturate()
 }
 
-/// Burley's two Schlick-shaped factors and 1 / pi, given cos^2(theta_d) in [0, 1].
+/// (1 - c)^5 for c clamped into [0, 1], in double words: 1 - c is exact as a two-sum and
+/// each of the three products rounds below the last place of the lane type.
 #[inline]
-fn burley_core<T: Real>(n_dot_v: T, n_dot_l: T, cos2_d: T, rho: T, roughness: T) -> T {
-    // F_D90 = 1/2 + 2 r cos^2(theta_d)
-    let fd90 = (T::TWO * roughness).mul_add(cos2_d, T::HALF);
-    let light = schlick_f90(T::ONE, fd90, n_dot_l);
-    let view = schlick_f90(T::ONE, fd90, n_dot_v);
-    // The parameter check wraps the horizon cut, so a bad parameter is NaN on every direction.
+fn one_minus_pow5<T: Real>(c: T) -> Dw<T> {
+    let y = Dw::sum(T::ONE, -c.saturate());
+    let y2 = y.mul(y);
+    y2.mul(y2).mul(y)
+}
+
+/// Schlick's shape with F0 = 1: 1 + (F_D90 - 1)(1 - c)^5, given F_D90 - 1.
+#[inline]
+fn factor<T: Real>(fd90_minus_1: Dw<T>, c: T) -> Dw<T> {
+    fd90_minus_1.mul(one_minus_pow5(c)).add(Dw::exact(T::ONE))
+}
+
+/// rho / pi k (1 + (F_D90 - 1)(1 - n.l)^5) (1 + (F_D90 - 1)(1 - n.v)^5) with the bad-input
+/// rule: the whole product is carried in double words and rounded once.
+#[inline]
+fn assemble<T: Real>(
+    n_dot_v: T,
+    n_dot_l: T,
+    fd90_minus_1: Dw<T>,
+    k: Dw<T>,
+    rho: T,
+    roughness: T,
+    cos2_d: T,
+) -> T {
+    let light = factor(fd90_minus_1, n_dot_l);
+    let view = factor(fd90_minus_1, n_dot_v);
+    let f = Dw::frac_1_pi()
+        .mul(Dw::exact(rho))
+        .mul(k)
+        .mul(light)
+        .mul(view)
+        .value();
+    // The parameter check wraps the horizon cut, so a bad parameter (or a NaN l.h, which the
+    // cut would turn into 0) is NaN on every direction.
     nan_unless(
-        params_ok(rho, roughness),
-        above_horizon(n_dot_v, n_dot_l, rho * T::FRAC_1_PI * light * view),
+        params_ok(rho, roughness) & !cos2_d.is_nan(),
+        above_horizon(n_dot_v, n_dot_l, f),
+    )
+}
+
+/// Burley's lobe given cos^2(theta_d) in [0, 1] as a double word.
+#[inline]
+fn burley_core<T: Real>(n_dot_v: T, n_dot_l: T, cos2_d: Dw<T>, rho: T, roughness: T) -> T {
+    // F_D90 - 1 = 2 r cos^2(theta_d) - 1/2 (2 r is exact).
+    let a = cos2_d
+        .mul(Dw::exact(T::TWO * roughness))
+        .add(Dw::exact(-T::HALF));
+    assemble(
+        n_dot_v,
+        n_dot_l,
+        a,
+        Dw::exact(T::ONE),
+        rho,
+        roughness,
+        cos2_d.hi,
     )
 }
 
@@ -79,9 +126,10 @@ fn burley_core<T: Real>(n_dot_v: T, n_dot_l: T, cos2_d: T, rho: T, roughness: T)
 /// into [0, 1]. Output in [0, 6.25 rho / pi] (the maximum at r = 1, both directions grazing,
 /// l.h = 1).
 ///
-/// Precision: f32 within 4e-6 rho / pi of f64 on the same inputs (measured 2.2e-6; absolute,
-/// since the factors cancel towards 0 at grazing for small F_D90), and f32x8 / f64x4 lanes
-/// bit-identical to scalars (`--test diffuse_burley_stability`).
+/// Precision: the whole product is carried in double-word arithmetic (Dekker 1971) and
+/// rounded once: within 0.50 ULP of the correctly rounded value on f32, f64, f32x8 and f64x4
+/// (MPFR oracle, `cargo test -p brdf-oracle --release --test lobes -- --nocapture`; bound 0.5), and lanes bit-identical to scalars
+/// (`--test diffuse_burley_stability`).
 ///
 /// Not energy conserving: its directional albedo exceeds rho for r > 0.4, by up to 56% (1.5575
 /// rho for r = 1 at grazing; see the module docs). Reciprocal: l.h = v.h.
@@ -91,7 +139,8 @@ fn burley_core<T: Real>(n_dot_v: T, n_dot_l: T, cos2_d: T, rho: T, roughness: T)
 #[inline]
 #[must_use]
 pub fn burley<T: Real>(n_dot_v: T, n_dot_l: T, l_dot_h: T, rho: T, roughness: T) -> T {
-    burley_core(n_dot_v, n_dot_l, l_dot_h.saturate().sq(), rho, roughness)
+    let lh = l_dot_h.saturate();
+    burley_core(n_dot_v, n_dot_l, Dw::product(lh, lh), rho, roughness)
 }
 
 /// [`burley`] with the renormalization of Lagarde and de Rousiers (the Frostbite listing
@@ -105,7 +154,8 @@ pub fn burley<T: Real>(n_dot_v: T, n_dot_l: T, l_dot_h: T, rho: T, roughness: T)
 /// listing's `linearRoughness`, which the notes square to get GGX alpha (section 3.2); the
 /// same r as [`burley`], with which it agrees exactly at r = 1 up to the factor 1/1.51.
 ///
-/// Domain, edges and precision as [`burley`]. Output in [0, 6.25 rho / (1.51 pi)]. At r = 0,
+/// Domain, edges and precision as [`burley`] (within 0.50 ULP, `cargo test -p brdf-oracle --release --test lobes -- --nocapture`). Output in
+/// [0, 6.25 rho / (1.51 pi)]. At r = 0,
 /// F_D90 = 0, so f goes to 0 as either direction goes to grazing.
 ///
 /// Closer to energy conserving, not exactly: for rho = 1 its directional albedo stays below 1
@@ -118,28 +168,33 @@ pub fn burley<T: Real>(n_dot_v: T, n_dot_l: T, l_dot_h: T, rho: T, roughness: T)
 #[inline]
 #[must_use]
 pub fn burley_renormalized<T: Real>(n_dot_v: T, n_dot_l: T, l_dot_h: T, rho: T, roughness: T) -> T {
-    renormalized_core(n_dot_v, n_dot_l, l_dot_h.saturate().sq(), rho, roughness)
+    let lh = l_dot_h.saturate();
+    renormalized_core(n_dot_v, n_dot_l, Dw::product(lh, lh), rho, roughness)
 }
 
-/// 1 - 1/1.51: the slope of Frostbite's energyFactor = lerp(1, 1/1.51, r).
-const ENERGY_FACTOR_SLOPE: f64 = 1.0 - 1.0 / 1.51;
+/// 1 - 1/1.51 = 51/151: the slope of Frostbite's energyFactor = lerp(1, 1/1.51, r), as its
+/// nearest f64 and the rest.
+const ENERGY_FACTOR_SLOPE: (f64, f64) = (0.337_748_344_370_860_93, -4.043_858_698_965_802e-18);
 
+/// The renormalized lobe given cos^2(theta_d) in [0, 1] as a double word.
 #[inline]
-fn renormalized_core<T: Real>(n_dot_v: T, n_dot_l: T, cos2_d: T, rho: T, roughness: T) -> T {
+fn renormalized_core<T: Real>(n_dot_v: T, n_dot_l: T, cos2_d: Dw<T>, rho: T, roughness: T) -> T {
     let r = roughness;
-    // F_D90 = r / 2 + 2 r cos^2(theta_d)
-    let fd90 = r * (T::TWO.mul_add(cos2_d, T::HALF));
-    let energy_factor = T::ONE - r * T::splat(ENERGY_FACTOR_SLOPE);
-    let light = schlick_f90(T::ONE, fd90, n_dot_l);
-    let view = schlick_f90(T::ONE, fd90, n_dot_v);
-    nan_unless(
-        params_ok(rho, r),
-        above_horizon(
-            n_dot_v,
-            n_dot_l,
-            rho * T::FRAC_1_PI * energy_factor * light * view,
-        ),
-    )
+    // F_D90 - 1 = r (1/2 + 2 cos^2(theta_d)) - 1 (doubling is exact).
+    let two_cos2 = Dw {
+        hi: T::TWO * cos2_d.hi,
+        lo: T::TWO * cos2_d.lo,
+    };
+    let a = two_cos2
+        .add(Dw::exact(T::HALF))
+        .mul(Dw::exact(r))
+        .add(Dw::exact(-T::ONE));
+    // energyFactor = 1 - r (1 - 1/1.51)
+    let (hi, tail) = ENERGY_FACTOR_SLOPE;
+    let k = Dw::constant(hi, tail)
+        .mul(Dw::exact(-r))
+        .add(Dw::exact(T::ONE));
+    assemble(n_dot_v, n_dot_l, a, k, rho, r, cos2_d.hi)
 }
 
 /// Validates rho and the perceptual roughness for the two Burley types.
@@ -187,13 +242,14 @@ impl<T: Real> Burley<T> {
     #[inline]
     #[must_use]
     pub fn eval(&self, wo: V3<T>, wi: V3<T>) -> T {
-        burley_core(
+        let f = burley_core(
             wo.z,
             wi.z,
-            cos2_d_from_directions(wo, wi),
+            Dw::exact(cos2_d_from_directions(wo, wi)),
             self.rho,
             self.roughness,
-        )
+        );
+        super::nan_if_nan_dir(wo, wi, f)
     }
 }
 
@@ -232,12 +288,13 @@ impl<T: Real> BurleyRenormalized<T> {
     #[inline]
     #[must_use]
     pub fn eval(&self, wo: V3<T>, wi: V3<T>) -> T {
-        renormalized_core(
+        let f = renormalized_core(
             wo.z,
             wi.z,
-            cos2_d_from_directions(wo, wi),
+            Dw::exact(cos2_d_from_directions(wo, wi)),
             self.rho,
             self.roughness,
-        )
+        );
+        super::nan_if_nan_dir(wo, wi, f)
     }
 }

@@ -215,11 +215,12 @@ impl<T: Real> ShirleyCoupled<T> {
         self.f0
     }
 
-    /// f(wo, wi) of [`shirley_coupled`] on local-frame unit vectors (normal = +z).
+    /// f(wo, wi) of [`shirley_coupled`] on local-frame unit vectors (normal = +z); NaN where
+    /// any component of wo or wi is NaN.
     #[inline]
     #[must_use]
     pub fn eval(&self, wo: V3<T>, wi: V3<T>) -> T {
-        shirley_coupled(wo.z, wi.z, self.rho, self.f0)
+        super::nan_if_nan_dir(wo, wi, shirley_coupled(wo.z, wi.z, self.rho, self.f0))
     }
 }
 
@@ -252,10 +253,11 @@ impl<T: Real> AshikhminShirley<T> {
         self.rs
     }
 
-    /// f(wo, wi) of [`ashikhmin_shirley`] on local-frame unit vectors (normal = +z).
+    /// f(wo, wi) of [`ashikhmin_shirley`] on local-frame unit vectors (normal = +z); NaN where
+    /// any component of wo or wi is NaN.
     #[inline]
     #[must_use]
     pub fn eval(&self, wo: V3<T>, wi: V3<T>) -> T {
-        ashikhmin_shirley(wo.z, wi.z, self.rho, self.rs)
+        super::nan_if_nan_dir(wo, wi, ashikhmin_shirley(wo.z, wi.z, self.rho, self.rs))
     }
 }

@@ -1,0 +1,425 @@
+//! The ULP harness: evaluate a kernel on f32, f64, f32x8 and f64x4 over a point set, compare
+//! each result with the high-precision reference, and keep the worst error in ULPs.
+//!
+//! Error of a result y against the exact value x (before any rounding):
+//! |y - x| / ulp(round(x)), with ulp of the target type's binade. A correctly rounded result
+//! scores at most 0.5; one more rounding adds up to about 0.5.
+//!
+//! Classes of points:
+//! - measured: |x| >= [`Ty::threshold`] (1e-30 in f32, 1e-300 in f64) and round(x) finite;
+//!   a NaN or infinite result there is a failure;
+//! - tiny: |x| below the threshold: passes when y is finite and |y - x| <= threshold;
+//! - overflow: round(x) is infinite: passes when y is +-inf or +-MAX with x's sign (the crate
+//!   caps poles at the largest finite value).
+//!
+//! Conditioning. Where a function's own condition number makes a few ULPs impossible for any
+//! kernel that receives rounded inputs (Fresnel at the critical angle, where dF/dcos is
+//! infinite; Rp at its double zero at Brewster's angle), the case is split in two by
+//! [`condition`], computed with MPFR at each point: kappa = max over cos +- 1 ulp (the
+//! first argument, moved to its neighbouring float in the point's own type) of
+//! |f(cos +- 1 ulp) - f(cos)| / ulp(f). The main row keeps the points with
+//! kappa <= [`KAPPA_MAX`]; a second case named `<name> (ill-conditioned)` (suffix
+//! [`ILL_CONDITIONED`]) takes the rest and is scored as error / kappa, in units of "the
+//! change one rounding of the cosine causes": a score <= 1 means the kernel is no worse than
+//! one rounding of its input. Only the first argument (the cosine, which reaches a kernel
+//! already rounded from a dot product) is perturbed: material parameters such as eta are
+//! used exactly by the kernels (eta - 1 is exact near 1), so their sensitivity, huge for
+//! eta within a few ulps of 1, excuses nothing and those points stay in the main row. The
+//! tightness check of `tests/harness.rs` perturbs an ill-conditioned row's results by kappa
+//! roundings, i.e. by one unit of its score.
+
+use brdf::Real;
+use brdf::wide::{f32x8, f64x4};
+use rug::Float;
+
+use crate::PREC;
+
+/// The scalar type a measurement is made in.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Ty {
+    /// `f32` (and `f32x8` lanes).
+    F32,
+    /// `f64` (and `f64x4` lanes).
+    F64,
+}
+
+impl Ty {
+    /// `x` rounded to this type (to nearest), back in an `f64`.
+    #[must_use]
+    pub fn round(self, x: f64) -> f64 {
+        match self {
+            Ty::F32 => f64::from(x as f32),
+            Ty::F64 => x,
+        }
+    }
+
+    /// Significand bits (24, 53).
+    #[must_use]
+    pub fn bits(self) -> i32 {
+        match self {
+            Ty::F32 => 24,
+            Ty::F64 => 53,
+        }
+    }
+
+    /// Smallest result magnitude that is measured in ULPs: 1e-30 (f32), 1e-300 (f64).
+    #[must_use]
+    pub fn threshold(self) -> f64 {
+        match self {
+            Ty::F32 => 1e-30,
+            Ty::F64 => 1e-300,
+        }
+    }
+
+    /// The largest finite value.
+    #[must_use]
+    pub fn max(self) -> f64 {
+        match self {
+            Ty::F32 => f64::from(f32::MAX),
+            Ty::F64 => f64::MAX,
+        }
+    }
+
+    /// The next representable value above `x` in this type (`x` finite, representable).
+    #[must_use]
+    pub fn next_up(self, x: f64) -> f64 {
+        match self {
+            Ty::F32 => f64::from((x as f32).next_up()),
+            Ty::F64 => x.next_up(),
+        }
+    }
+
+    /// The next representable value below `x` in this type.
+    #[must_use]
+    pub fn next_down(self, x: f64) -> f64 {
+        match self {
+            Ty::F32 => f64::from((x as f32).next_down()),
+            Ty::F64 => x.next_down(),
+        }
+    }
+}
+
+/// One kernel instantiated on the four lane types; arguments in a slice, in the order of the
+/// case's point coordinates.
+#[derive(Clone, Copy)]
+pub struct Kernels {
+    /// On `f32`.
+    pub f32: fn(&[f32]) -> f32,
+    /// On `f64`.
+    pub f64: fn(&[f64]) -> f64,
+    /// On `f32x8`.
+    pub f32x8: fn(&[f32x8]) -> f32x8,
+    /// On `f64x4`.
+    pub f64x4: fn(&[f64x4]) -> f64x4,
+}
+
+/// `kernel!(|x| expr)`: a [`Kernels`] from one expression generic over `T: Real`, with `x`
+/// the argument slice `&[T]`.
+#[macro_export]
+macro_rules! kernel {
+    (|$x:ident| $body:expr) => {{
+        fn k<T: brdf::Real>($x: &[T]) -> T {
+            $body
+        }
+        $crate::harness::Kernels {
+            f32: k::<f32>,
+            f64: k::<f64>,
+            f32x8: k::<brdf::wide::f32x8>,
+            f64x4: k::<brdf::wide::f64x4>,
+        }
+    }};
+}
+
+/// The function families, one test file each.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Family {
+    /// GGX and Beckmann: D, Lambda, G1, G2, V.
+    Microfacet,
+    /// Dielectric, conductor, Schlick, F0.
+    Fresnel,
+    /// Display transfer functions.
+    Color,
+    /// Diffuse and Phong lobes.
+    Lobes,
+}
+
+/// One exact function under test.
+pub struct Case {
+    /// The brdf path, e.g. `ggx::d`; the key of [`crate::bounds::BOUNDS`].
+    pub name: &'static str,
+    /// Its family.
+    pub family: Family,
+    /// The definition the reference implements (paper and equation).
+    pub source: &'static str,
+    /// The reference on exact inputs at the inputs' precision.
+    pub reference: fn(&[Float]) -> Float,
+    /// The kernel on each lane type.
+    pub kernels: Kernels,
+    /// The points (each a vector of arguments) for a type; coordinates are rounded to the
+    /// type by the harness.
+    pub points: fn(Ty) -> Vec<Vec<f64>>,
+}
+
+/// Worst-case figures of one kernel on one lane type.
+#[derive(Clone, Debug, Default)]
+pub struct Stats {
+    /// Largest error in ULPs over measured points (inf when a result was NaN or inf).
+    pub max_ulp: f64,
+    /// The arguments where `max_ulp` was reached.
+    pub worst: Vec<f64>,
+    /// Points evaluated.
+    pub points: usize,
+    /// Points whose exact result is below the threshold (checked absolutely, not in ULPs).
+    pub tiny: usize,
+    /// Points whose exact result overflows the type.
+    pub overflow: usize,
+    /// Points that failed outright: NaN or inf for a finite reference, a tiny result off by
+    /// more than the threshold, an overflowing one not capped.
+    pub failures: usize,
+    /// The first failing point, if any: arguments, computed value, exact value.
+    pub first_failure: Option<(Vec<f64>, f64, f64)>,
+}
+
+impl Stats {
+    /// Records one result; the error in ULPs is divided by `kappa` (1 outside
+    /// ill-conditioned rows) and the result perturbed by `perturb * kappa` relative.
+    fn record(&mut self, args: &[f64], y: f64, exact: &Float, ty: Ty, perturb: f64, kappa: f64) {
+        self.points += 1;
+        let ex = exact.to_f64();
+        let rounded = match ty {
+            Ty::F32 => f64::from(exact.to_f32()),
+            Ty::F64 => ex,
+        };
+        let fail = |s: &mut Stats| {
+            s.failures += 1;
+            if s.first_failure.is_none() {
+                s.first_failure = Some((args.to_vec(), y, ex));
+            }
+        };
+        if rounded.is_infinite() {
+            self.overflow += 1;
+            if !(y.abs() >= ty.max() && y.signum() == ex.signum()) {
+                fail(self);
+            }
+            return;
+        }
+        if ex.abs() < ty.threshold() {
+            self.tiny += 1;
+            if !y.is_finite() || (y - ex).abs() > ty.threshold() {
+                fail(self);
+            }
+            return;
+        }
+        if !y.is_finite() {
+            fail(self);
+            self.max_ulp = f64::INFINITY;
+            self.worst = args.to_vec();
+            return;
+        }
+        let err = ulp_error(y, exact, rounded, ty, perturb * kappa) / kappa;
+        if err > self.max_ulp {
+            self.max_ulp = err;
+            self.worst = args.to_vec();
+        }
+    }
+}
+
+/// |y (1 + perturb) - exact| / ulp(rounded), computed in MPFR so that neither the difference
+/// nor the perturbation is rounded to the target type.
+fn ulp_error(y: f64, exact: &Float, rounded: f64, ty: Ty, perturb: f64) -> f64 {
+    let p = exact.prec();
+    let yp = Float::with_val(p, y) * (1 + Float::with_val(p, perturb));
+    in_ulps(yp - exact, rounded, ty)
+}
+
+/// |diff| in ULPs of `rounded`'s binade in `ty`.
+fn in_ulps(diff: Float, rounded: f64, ty: Ty) -> f64 {
+    // rounded = m 2^e with m in [0.5, 1): its binade's ulp is 2^(e - bits).
+    let e = Float::with_val(64, rounded).get_exp().unwrap_or(0);
+    (diff.abs() >> (e - ty.bits())).to_f64()
+}
+
+/// Name suffix of a case scored relative to its conditioning (module docs, "Conditioning").
+pub const ILL_CONDITIONED: &str = " (ill-conditioned)";
+
+/// Condition number above which a point leaves a function's main row for its
+/// [`ILL_CONDITIONED`] row: a 1-ulp change of the cosine moves the exact result by more than
+/// 8 ulps. Below it the kernels' own few roundings dominate and the 4-ULP target applies.
+pub const KAPPA_MAX: f64 = 8.0;
+
+/// The condition number of `reference` at `p` (coordinates already rounded to `ty`) in the
+/// first argument: max over `p[0]` +- 1 ulp of `ty` of |f(p') - f(p)| / ulp(f(p)), in MPFR.
+/// 0 where f(p) is below [`Ty::threshold`] or overflows `ty` (those points are scored
+/// absolutely); a neighbour where the reference is NaN (outside its domain) is skipped.
+#[must_use]
+pub fn condition(reference: fn(&[Float]) -> Float, ty: Ty, p: &[f64]) -> f64 {
+    let eval = |q: &[f64]| {
+        let prec = precision_for(q, PREC);
+        let args: Vec<Float> = q.iter().map(|&v| Float::with_val(prec, v)).collect();
+        reference(&args)
+    };
+    let f = eval(p);
+    let ex = f.to_f64();
+    let rounded = ty.round(ex);
+    if f.is_nan() || rounded.is_infinite() || ex.abs() < ty.threshold() {
+        return 0.0;
+    }
+    let mut kappa: f64 = 0.0;
+    for x in [ty.next_up(p[0]), ty.next_down(p[0])] {
+        let mut q = p.to_vec();
+        q[0] = x;
+        let g = eval(&q);
+        if !g.is_nan() {
+            let prec = g.prec().max(f.prec());
+            kappa = kappa.max(in_ulps(Float::with_val(prec, &g - &f), rounded, ty));
+        }
+    }
+    kappa
+}
+
+/// The four measurements of one case.
+#[derive(Clone, Debug, Default)]
+pub struct Measurement {
+    /// On `f32`.
+    pub f32: Stats,
+    /// On `f64`.
+    pub f64: Stats,
+    /// On `f32x8` (against the f32 references).
+    pub f32x8: Stats,
+    /// On `f64x4` (against the f64 references).
+    pub f64x4: Stats,
+    /// Largest difference, in f64 ULPs of the result, between the reference at the working
+    /// precision and with [`PREC`] more bits, over the measured points (0 unless checked).
+    pub reference_drift: f64,
+}
+
+/// Options of [`measure`].
+#[derive(Clone, Copy, Debug, Default)]
+pub struct Options {
+    /// Multiply each computed result by (1 + perturb) before comparing (in MPFR): a relative
+    /// error of one rounding is 2^-24 (f32) or 2^-53 (f64). Used to prove the bounds tight.
+    /// The f32 entry applies to f32 and f32x8, the f64 one to f64 and f64x4.
+    pub perturb: (f64, f64),
+    /// Evaluate the references again with [`PREC`] more bits and record the drift.
+    pub check_reference: bool,
+    /// Skip the lane types.
+    pub scalars_only: bool,
+}
+
+/// The points of `case` for `ty`, each coordinate rounded to `ty`.
+#[must_use]
+pub fn points_for(case: &Case, ty: Ty) -> Vec<Vec<f64>> {
+    (case.points)(ty)
+        .into_iter()
+        .map(|p| p.into_iter().map(|v| ty.round(v)).collect())
+        .collect()
+}
+
+/// The working precision for the point `p`: `base` plus twice the largest binary exponent of
+/// its arguments, so that sums such as 1 - c^2 are exact even for c = 1e-310 (where 256 bits
+/// would round 1 - c^2 to 1 and turn sqrt(1 - sin^2) into 0).
+#[must_use]
+pub fn precision_for(p: &[f64], base: u32) -> u32 {
+    let span = p
+        .iter()
+        .filter(|v| **v != 0.0)
+        .map(|&v| Float::with_val(64, v).get_exp().unwrap_or(0).unsigned_abs())
+        .max()
+        .unwrap_or(0);
+    base + 2 * span
+}
+
+fn references(case: &Case, pts: &[Vec<f64>], base: u32) -> Vec<Float> {
+    pts.iter()
+        .map(|p| {
+            let prec = precision_for(p, base);
+            let args: Vec<Float> = p.iter().map(|&v| Float::with_val(prec, v)).collect();
+            (case.reference)(&args)
+        })
+        .collect()
+}
+
+/// Evaluates `lanes` (an `f32x8` or `f64x4` kernel) on `pts` in groups of `T::LANES`,
+/// padding the last group with its last point, and returns one `f64` per point.
+fn eval_lanes<T: Real>(
+    pts: &[Vec<f64>],
+    to_scalar: fn(f64) -> T::Scalar,
+    from_scalar: fn(T::Scalar) -> f64,
+    k: fn(&[T]) -> T,
+) -> Vec<f64> {
+    let mut out = Vec::with_capacity(pts.len());
+    for chunk in pts.chunks(T::LANES) {
+        let n_args = chunk[0].len();
+        let args: Vec<T> = (0..n_args)
+            .map(|a| T::from_fn(|i| to_scalar(chunk[i.min(chunk.len() - 1)][a])))
+            .collect();
+        let r = k(&args);
+        out.extend((0..chunk.len()).map(|i| from_scalar(r.lane(i))));
+    }
+    out
+}
+
+/// Measures `case` on every lane type.
+///
+/// # Panics
+/// If the reference is NaN at some point: the point set left the function's domain.
+#[must_use]
+pub fn measure(case: &Case, opts: Options) -> Measurement {
+    let mut m = Measurement::default();
+    for ty in [Ty::F32, Ty::F64] {
+        let pts = points_for(case, ty);
+        let refs = references(case, &pts, PREC);
+        if let Some(i) = refs.iter().position(Float::is_nan) {
+            panic!("{}: reference is NaN at {:?}", case.name, pts[i]);
+        }
+        if opts.check_reference {
+            let fine = references(case, &pts, 2 * PREC);
+            for (a, b) in refs.iter().zip(&fine) {
+                let r = b.to_f64();
+                if r.is_finite() && r.abs() >= Ty::F64.threshold() {
+                    let d = in_ulps(Float::with_val(b.prec(), a - b), r, Ty::F64);
+                    m.reference_drift = m.reference_drift.max(d);
+                }
+            }
+        }
+        let (scalar, lanes): (Vec<f64>, Option<Vec<f64>>) = match ty {
+            Ty::F32 => (
+                pts.iter()
+                    .map(|p| {
+                        let a: Vec<f32> = p.iter().map(|&v| v as f32).collect();
+                        f64::from((case.kernels.f32)(&a))
+                    })
+                    .collect(),
+                (!opts.scalars_only).then(|| {
+                    eval_lanes::<f32x8>(&pts, |v| v as f32, f64::from, case.kernels.f32x8)
+                }),
+            ),
+            Ty::F64 => (
+                pts.iter().map(|p| (case.kernels.f64)(p)).collect(),
+                (!opts.scalars_only)
+                    .then(|| eval_lanes::<f64x4>(&pts, |v| v, |v| v, case.kernels.f64x4)),
+            ),
+        };
+        let perturb = match ty {
+            Ty::F32 => opts.perturb.0,
+            Ty::F64 => opts.perturb.1,
+        };
+        let (s_stats, l_stats) = match ty {
+            Ty::F32 => (&mut m.f32, &mut m.f32x8),
+            Ty::F64 => (&mut m.f64, &mut m.f64x4),
+        };
+        let ill = case.name.ends_with(ILL_CONDITIONED);
+        for (i, p) in pts.iter().enumerate() {
+            let kappa = if ill {
+                condition(case.reference, ty, p).max(1.0)
+            } else {
+                1.0
+            };
+            s_stats.record(p, scalar[i], &refs[i], ty, perturb, kappa);
+            if let Some(l) = &lanes {
+                l_stats.record(p, l[i], &refs[i], ty, perturb, kappa);
+            }
+        }
+    }
+    m
+}
