@@ -37,8 +37,9 @@
 //! see `crate::real`.)
 
 use crate::domain::{any_nan3, nan_where};
+use crate::dw::{Rel, two_prod, two_sum};
 use crate::error::ParamError;
-use crate::microfacet::{Dw, Microfacet, clamp_alpha, sin2_dw, two_prod, two_sum, validate_alphas};
+use crate::microfacet::{Microfacet, clamp_alpha, validate_alphas};
 use crate::real::Real;
 use crate::vec3::V3;
 
@@ -48,17 +49,17 @@ const FRAC_1_2SQRT_PI: f64 = 0.282_094_791_773_878_14;
 /// The exponent E = tan^2(theta) / alpha^2 = (1 - c^2) / (c^2 alpha^2) of the isotropic
 /// Beckmann D, with c^2 alpha^2 (the denominator, for D's own c^4 alpha^2 below).
 #[inline]
-fn exponent_iso<T: Real>(c: T, alpha: T) -> (Dw<T>, Dw<T>) {
-    let c2 = Dw::exact(c).mul(Dw::exact(c));
-    let c2a2 = c2.mul(Dw::exact(alpha).mul(Dw::exact(alpha)));
-    (sin2_dw(c).div(c2a2), c2)
+fn exponent_iso<T: Real>(c: T, alpha: T) -> (Rel<T>, Rel<T>) {
+    let c2 = Rel::exact(c).mul(Rel::exact(c));
+    let c2a2 = c2.mul(Rel::exact(alpha).mul(Rel::exact(alpha)));
+    (Rel::one_minus_sq(c).div(c2a2), c2)
 }
 
 /// exp(-E) / (pi den) for E and den carried with their corrections: the rounding of E is
 /// compensated (exp(-hi) (1 - lo)) and exp's argument is shifted by 64 ln 2 where E > 64, so
 /// exp(-E) cannot fall into the subnormal range while D itself is a normal number.
 #[inline]
-fn exp_neg_over<T: Real>(e: Dw<T>, den: Dw<T>) -> T {
+fn exp_neg_over<T: Real>(e: Rel<T>, den: Rel<T>) -> T {
     const SHIFT: f64 = 64.0 * core::f64::consts::LN_2;
     // SHIFT = shift_hi + shift_lo in the lane type.
     let shift_hi_t = T::splat(SHIFT);
@@ -71,14 +72,14 @@ fn exp_neg_over<T: Real>(e: Dw<T>, den: Dw<T>) -> T {
     let scale = T::select(big, T::splat(5.421_010_862_427_522e-20), T::ONE);
     // pi den with its rounding recovered; z^4 underflows only where exp(-E) is already 0,
     // and the max keeps scale / den finite there (so 0 x inf cannot occur).
-    let pden = den.mul(Dw::pi());
-    let pden = Dw {
+    let pden = den.mul(Rel::pi());
+    let pden = Rel {
         hi: pden.hi.max(T::MIN_POSITIVE),
         rel: pden.rel,
     };
-    let q = Dw::exact(scale).div(pden);
+    let q = Rel::exact(scale).div(pden);
     // exp(-(h + lo)) = exp(-h) (1 - lo) to first order (|lo| is a few ULP of E).
-    let x = Dw {
+    let x = Rel {
         hi: (-h).exp(),
         rel: -lo,
     };
@@ -159,7 +160,7 @@ fn k_of_a<T: Real>(a: T) -> T {
 /// exp(-a^2) / (2 sqrt(pi)) (1 / a - 1 / (a + K)) = exp(-a^2) K / (2 sqrt(pi) a (a + K)):
 /// a product of positive factors, no cancellation anywhere.
 #[inline]
-fn lambda_parts<T: Real>(a: T, a2: Dw<T>) -> (T, T) {
+fn lambda_parts<T: Real>(a: T, a2: Rel<T>) -> (T, T) {
     // Beyond a = 1e4 exp(-a^2) is 0 in every float type; the cap keeps the continued fraction
     // and the split finite (a is +inf at the normal).
     let k = k_of_a(a.min(T::splat(1e4)));
@@ -173,7 +174,7 @@ struct Arg<T: Real> {
     /// a itself.
     a: T,
     /// a^2, carried exactly (see [`finish_a`]).
-    a2: Dw<T>,
+    a2: Rel<T>,
     /// r = alpha(phi) sin(theta) and |z| = |cos(theta)|, a = |z| / r (kept apart: 1 / a
     /// overflows f32 at z = 1e-38).
     r: T,
@@ -271,10 +272,10 @@ impl<T: Real> Beckmann<T> {
     #[inline]
     fn a_of_w(&self, w: V3<T>) -> (T, Arg<T>) {
         let (ax, ay) = self.clamped_alphas();
-        let px = Dw::exact(ax).mul(Dw::exact(w.x));
-        let py = Dw::exact(ay).mul(Dw::exact(w.y));
+        let px = Rel::exact(ax).mul(Rel::exact(w.x));
+        let py = Rel::exact(ay).mul(Rel::exact(w.y));
         let r2 = px.mul(px).add(py.mul(py));
-        let z2 = Dw::exact(w.z).mul(Dw::exact(w.z));
+        let z2 = Rel::exact(w.z).mul(Rel::exact(w.z));
         let r = sqrt_dw(r2);
         (r, finish_a(z2.div(r2), z2.hi, r, w.z.abs()))
     }
@@ -287,11 +288,11 @@ impl<T: Real> Microfacet<T> for Beckmann<T> {
     #[inline]
     fn d(&self, m: V3<T>) -> T {
         let (ax, ay) = self.clamped_alphas();
-        let u = Dw::exact(m.x).div(Dw::exact(ax));
-        let v = Dw::exact(m.y).div(Dw::exact(ay));
-        let z2 = Dw::exact(m.z).mul(Dw::exact(m.z));
+        let u = Rel::exact(m.x).div(Rel::exact(ax));
+        let v = Rel::exact(m.y).div(Rel::exact(ay));
+        let z2 = Rel::exact(m.z).mul(Rel::exact(m.z));
         let e = u.mul(u).add(v.mul(v)).div(z2);
-        let den = Dw::exact(ax).mul(Dw::exact(ay)).mul(z2).mul(z2);
+        let den = Rel::exact(ax).mul(Rel::exact(ay)).mul(z2).mul(z2);
         let value = T::select(m.z.simd_gt(T::ZERO), exp_neg_over(e, den), T::ZERO);
         nan_where(any_nan3(m) | ax.is_nan() | ay.is_nan(), value)
     }
@@ -350,7 +351,7 @@ pub fn d<T: Real>(n_dot_h: T, alpha: T) -> T {
     let a = clamp_alpha(alpha);
     let c = n_dot_h.min(T::ONE);
     let (e, c2) = exponent_iso(c, a);
-    let den = Dw::exact(a).mul(Dw::exact(a)).mul(c2).mul(c2);
+    let den = Rel::exact(a).mul(Rel::exact(a)).mul(c2).mul(c2);
     let value = crate::domain::above(n_dot_h, exp_neg_over(e, den));
     nan_where(a.is_nan(), value)
 }
@@ -371,9 +372,9 @@ pub fn a_of<T: Real>(n_dot_v: T, alpha: T) -> T {
 fn a_and_a2<T: Real>(n_dot_v: T, alpha: T) -> Arg<T> {
     let c = n_dot_v.abs().min(T::ONE);
     let a = clamp_alpha(alpha);
-    let c2 = Dw::exact(c).mul(Dw::exact(c));
-    let s2 = sin2_dw(c);
-    let a2 = c2.div(Dw::exact(a).mul(Dw::exact(a)).mul(s2));
+    let c2 = Rel::exact(c).mul(Rel::exact(c));
+    let s2 = Rel::one_minus_sq(c);
+    let a2 = c2.div(Rel::exact(a).mul(Rel::exact(a)).mul(s2));
     finish_a(a2, c2.hi, a * s2.hi.sqrt(), c)
 }
 
@@ -386,12 +387,12 @@ fn a_and_a2<T: Real>(n_dot_v: T, alpha: T) -> Arg<T> {
 /// is evaluated from r / |z| (a division of exactly rounded operands); a = |z| / r and a^2
 /// only enter through a + K and exp(-a^2) = 1.
 #[inline]
-fn finish_a<T: Real>(a2: Dw<T>, z2: T, r: T, z: T) -> Arg<T> {
+fn finish_a<T: Real>(a2: Rel<T>, z2: T, r: T, z: T) -> Arg<T> {
     let tiny = z2.simd_lt(T::MIN_POSITIVE / (T::EPSILON * T::EPSILON));
     let direct = z / r;
     Arg {
         a: T::select(tiny, direct, sqrt_dw(a2)),
-        a2: Dw {
+        a2: Rel {
             hi: T::select(tiny, direct * direct, a2.hi),
             rel: T::select(tiny, T::ZERO, a2.rel),
         },
@@ -406,7 +407,7 @@ fn finish_a<T: Real>(a2: Dw<T>, z2: T, r: T, z: T) -> Arg<T> {
 /// smallest normal (where the two-products that made rel were themselves inexact) rel is
 /// ignored.
 #[inline]
-fn sqrt_dw<T: Real>(x: Dw<T>) -> T {
+fn sqrt_dw<T: Real>(x: Rel<T>) -> T {
     let s = x.hi.sqrt();
     // The exact residual hi - s^2 recovers the rounding of the square root itself:
     // sqrt(hi (1 + rel)) = s + (hi - s^2) / (2 s) + s rel / 2 to first order.

@@ -43,6 +43,7 @@
 //! enters as a ratio of two positive sums that damps its own roundings by half.
 
 use crate::domain::{in_unit, nan_unless};
+use crate::dw::{Dw, pow2_nearest, two_sum};
 use crate::real::Real;
 use crate::vec3::V3;
 
@@ -59,174 +60,6 @@ const ETA_RATIO_FORM: f64 = 256.0;
 
 /// Above this max(eta, k) [`conductor`] works with N / max(eta, k): |N|^4 stays below 2^64.
 const CONDUCTOR_SCALE_HI: f64 = 65536.0;
-
-/// Veltkamp's split of `a` into a high half and the exact rest (Dekker 1971, "A
-/// floating-point technique for extending the available precision"); |a| below MAX / 4097
-/// (f32) or MAX / 2^27 (f64).
-#[inline]
-fn split<T: Real>(a: T) -> (T, T) {
-    // 2^ceil(p / 2) + 1 for a p-bit significand: 2^12 + 1 (f32), 2^27 + 1 (f64).
-    let eps: f64 = T::EPSILON.lane(0).into();
-    let factor = if eps > 1e-10 { 4097.0 } else { 134_217_729.0 };
-    let t = T::splat(factor) * a;
-    let hi = t - (t - a);
-    (hi, a - hi)
-}
-
-/// Dekker's exact product a b = p + e, without FMA (identical on every target and lane type).
-#[inline]
-fn two_prod<T: Real>(a: T, b: T) -> (T, T) {
-    let p = a * b;
-    let (ah, al) = split(a);
-    let (bh, bl) = split(b);
-    (p, al * bl - (((p - ah * bh) - al * bh) - ah * bl))
-}
-
-/// Dekker's exact square a^2 = p + e (one split instead of [`two_prod`]'s two).
-#[inline]
-fn two_sq<T: Real>(a: T) -> (T, T) {
-    let p = a * a;
-    let (ah, al) = split(a);
-    (p, al * al - ((p - ah * ah) - T::TWO * ah * al))
-}
-
-/// Knuth's exact sum a + b = s + e.
-#[inline]
-fn two_sum<T: Real>(a: T, b: T) -> (T, T) {
-    let s = a + b;
-    let bb = s - a;
-    (s, (a - (s - bb)) + (b - bb))
-}
-
-/// The power of two nearest `a` (a Veltkamp split keeping one significant bit); |a| below
-/// MAX / 2^24 (f32) or MAX / 2^53 (f64).
-#[inline]
-fn pow2_nearest<T: Real>(a: T) -> T {
-    // 2^(p - 1) + 1 for a p-bit significand.
-    let eps: f64 = T::EPSILON.lane(0).into();
-    let factor = if eps > 1e-10 {
-        8_388_609.0
-    } else {
-        4_503_599_627_370_497.0
-    };
-    let t = T::splat(factor) * a;
-    t - (t - a)
-}
-
-/// A double-word number hi + lo (|lo| about ulp(hi) / 2 or less): about twice the working
-/// precision, for the few quantities of the exact Fresnel forms whose roundings would
-/// otherwise be squared into the result. Operations follow Dekker's add and mul (the low
-/// parts' own products are dropped: relative error a few u^2).
-#[derive(Clone, Copy)]
-struct Dw<T> {
-    hi: T,
-    lo: T,
-}
-
-impl<T: Real> Dw<T> {
-    #[inline]
-    fn from(x: T) -> Self {
-        Self { hi: x, lo: T::ZERO }
-    }
-    /// The exact product of two working-precision numbers.
-    #[inline]
-    fn prod(a: T, b: T) -> Self {
-        let (hi, lo) = two_prod(a, b);
-        Self { hi, lo }
-    }
-    /// The exact square of a working-precision number.
-    #[inline]
-    fn square(a: T) -> Self {
-        let (hi, lo) = two_sq(a);
-        Self { hi, lo }
-    }
-    /// hi + lo renormalized (|hi| >= |lo| holds for every caller).
-    #[inline]
-    fn norm(hi: T, lo: T) -> Self {
-        let s = hi + lo;
-        Self {
-            hi: s,
-            lo: lo - (s - hi),
-        }
-    }
-    #[inline]
-    fn select(m: T::Mask, a: Self, b: Self) -> Self {
-        Self {
-            hi: T::select(m, a.hi, b.hi),
-            lo: T::select(m, a.lo, b.lo),
-        }
-    }
-    #[inline]
-    fn neg(self) -> Self {
-        Self {
-            hi: -self.hi,
-            lo: -self.lo,
-        }
-    }
-    /// self * f for a power of two f (exact unless the low part underflows).
-    #[inline]
-    fn scale(self, f: T) -> Self {
-        Self {
-            hi: self.hi * f,
-            lo: self.lo * f,
-        }
-    }
-    #[inline]
-    fn scale2(self) -> Self {
-        Self {
-            hi: T::TWO * self.hi,
-            lo: T::TWO * self.lo,
-        }
-    }
-    #[inline]
-    fn add(self, o: Self) -> Self {
-        let (s, e) = two_sum(self.hi, o.hi);
-        Self::norm(s, e + (self.lo + o.lo))
-    }
-    #[inline]
-    fn add_t(self, o: T) -> Self {
-        let (s, e) = two_sum(self.hi, o);
-        Self::norm(s, e + self.lo)
-    }
-    /// re^2 + im^2 for double words re and im (one normalization).
-    #[inline]
-    fn abs2(re: Self, im: Self) -> Self {
-        let (a, ea) = two_sq(re.hi);
-        let (b, eb) = two_sq(im.hi);
-        let (s, e) = two_sum(a, b);
-        let cross = T::TWO * re.hi.mul_add(re.lo, im.hi * im.lo);
-        Self::norm(s, e + ((ea + eb) + cross))
-    }
-    /// self^2 (as [`Dw::mul`], with one split).
-    #[inline]
-    fn sq(self) -> Self {
-        let (p, e) = two_sq(self.hi);
-        Self::norm(p, e + T::TWO * self.hi * self.lo)
-    }
-    #[inline]
-    fn mul(self, o: Self) -> Self {
-        let (p, e) = two_prod(self.hi, o.hi);
-        Self::norm(p, e + (self.hi * o.lo + self.lo * o.hi))
-    }
-    /// The square root (0 for a non-positive hi), one Newton correction from sqrt(hi).
-    #[inline]
-    fn sqrt(self) -> Self {
-        let r = self.hi.sqrt_nonneg();
-        let pos = r.simd_gt(T::ZERO);
-        let (p, e) = two_prod(r, r);
-        let safe = T::select(pos, r, T::ONE);
-        let corr = (((self.hi - p) - e) + self.lo) / (T::TWO * safe);
-        Self::norm(r, T::select(pos, corr, T::ZERO))
-    }
-    /// self / d rounded once (plus the first-order terms of both low parts); 0 where d is 0.
-    #[inline]
-    fn ratio(self, d: Self) -> T {
-        let ok = !d.hi.simd_eq(T::ZERO);
-        let dh = T::select(ok, d.hi, T::ONE);
-        let q = self.hi / dh;
-        T::select(ok, q + (self.lo - q * d.lo) / dh, T::ZERO)
-    }
-}
 
 /// Normal-incidence reflectance of a dielectric: F0 = ((eta - 1) / (eta + 1))^2 (Fresnel's
 /// equations at theta = 0; the "F0 from IOR" of real-time engines). Domain eta in (0, MAX]:
@@ -379,11 +212,11 @@ pub fn dielectric_polarized<T: Real>(cos_theta_i: T, eta: T) -> (T, T) {
     // without cancelling rounded terms. The clamp keeps the discarded lanes of the extreme
     // path finite (Veltkamp's split overflows near MAX).
     let nm = n.clamp(T::splat(1.0 / ETA_RATIO_FORM), T::splat(ETA_RATIO_FORM));
-    let n2 = Dw::prod(nm, nm);
+    let n2 = Dw::product(nm, nm);
     let n2m1 = n2.add_t(-T::ONE);
-    let cc = Dw::prod(c, c);
+    let cc = Dw::product(c, c);
     let n2cc = n2.mul(cc);
-    let a = Dw::select(inside, Dw::prod(nm, c), Dw::from(c));
+    let a = Dw::select(inside, Dw::product(nm, c), Dw::exact(c));
     let a2 = Dw::select(inside, n2cc, cc);
     let m = Dw::select(inside, n2m1.neg(), n2m1);
     let g2 = a2.add(m);
@@ -391,7 +224,7 @@ pub fn dielectric_polarized<T: Real>(cos_theta_i: T, eta: T) -> (T, T) {
     // (a + g)^2 as a (a + 2 g) + g2, so that a = 0 gives exactly g2 = m and r_perp = -1.
     let d_perp = a.mul(a.add(g.scale2())).add(g2);
     let perp_mid = m.neg().ratio(d_perp);
-    let f = Dw::select(inside, n2, Dw::from(T::ONE));
+    let f = Dw::select(inside, n2, Dw::exact(T::ONE));
     let w = n2cc.add(cc).add(f.neg());
     let x = n2.mul(Dw::select(inside, g, a));
     let y = Dw::select(inside, a, g);
@@ -506,7 +339,7 @@ pub fn conductor<T: Real>(cos_theta_i: T, eta: T, k: T) -> T {
     let cm2 = Dw::square(cm);
     let n2_re = re2.add(im2.neg());
     let u_re = n2_re.add(m2.neg());
-    let u_im = Dw::prod(T::TWO * re, im);
+    let u_im = Dw::product(T::TWO * re, im);
     // z = s^2 = N^2 - s2 m^2, as u + (c m)^2 or as N^2 - (m^2 - (c m)^2), whichever adds the
     // smaller terms (the first for N near 1, the second for small N near normal incidence,
     // where u + c^2 would cancel to nothing).
@@ -524,7 +357,7 @@ pub fn conductor<T: Real>(cos_theta_i: T, eta: T, k: T) -> T {
     let (sr2, si2) = (Dw::square(s0_re), Dw::square(s0_im));
     let (d, de) = two_sum(sr2.hi, -si2.hi);
     let r_re = ((z_re.hi - d) - de) + ((z_re.lo - sr2.lo) + si2.lo);
-    let w = Dw::prod(T::TWO * s0_re, s0_im);
+    let w = Dw::product(T::TWO * s0_re, s0_im);
     let r_im = (u_im.hi - w.hi) + (u_im.lo - w.lo);
     let s0_abs2 = s0_re.mul_add(s0_re, s0_im * s0_im);
     let has_root = s0_abs2.simd_gt(T::ZERO);

@@ -44,8 +44,9 @@
 //! subnormal cosine (exact as given) never meets a subnormal product.
 
 use crate::domain::{above, any_nan3, nan_unless, nan_where};
+use crate::dw::Rel;
 use crate::error::ParamError;
-use crate::microfacet::{Dw, Microfacet, clamp_alpha, sin2_dw, validate_alphas};
+use crate::microfacet::{Microfacet, clamp_alpha, validate_alphas};
 use crate::real::Real;
 use crate::vec3::V3;
 
@@ -109,14 +110,14 @@ impl<T: Real> Ggx<T> {
     /// q's three roundings and the square root's would otherwise add up to 2 ULP, and the
     /// separable G2 multiplies two of them.
     #[inline]
-    fn g1_dw(&self, w: V3<T>) -> Dw<T> {
+    fn g1_dw(&self, w: V3<T>) -> Rel<T> {
         let (ax, ay) = self.clamped_alphas();
-        let c = Dw::exact(w.z.abs());
-        let px = Dw::exact(ax).mul(Dw::exact(w.x));
-        let py = Dw::exact(ay).mul(Dw::exact(w.y));
+        let c = Rel::exact(w.z.abs());
+        let px = Rel::exact(ax).mul(Rel::exact(w.x));
+        let py = Rel::exact(ay).mul(Rel::exact(w.y));
         let s = px.mul(px).add(py.mul(py)).add(c.mul(c)).sqrt();
         // 0 at the horizon (2 |z| = 0 over alpha sin > 0).
-        Dw::exact(T::TWO * c.hi).div(c.add(s))
+        Rel::exact(T::TWO * c.hi).div(c.add(s))
     }
 
     /// `alpha_x^2 x^2 + alpha_y^2 y^2` = alpha^2 tan^2(theta) cos^2(theta) of `w`.
@@ -133,17 +134,20 @@ impl<T: Real> Microfacet<T> for Ggx<T> {
     #[inline]
     fn d(&self, m: V3<T>) -> T {
         let (ax, ay) = self.clamped_alphas();
-        let u = Dw::exact(m.x).div(Dw::exact(ax));
-        let v = Dw::exact(m.y).div(Dw::exact(ay));
+        let u = Rel::exact(m.x).div(Rel::exact(ax));
+        let v = Rel::exact(m.y).div(Rel::exact(ay));
         // t carried to twice the precision: its rounding would count twice in t^2.
         let t = u
             .mul(u)
             .add(v.mul(v))
-            .add(Dw::exact(m.z).mul(Dw::exact(m.z)));
-        let den = Dw::exact(ax).mul(Dw::exact(ay)).mul(t.mul(t)).mul(Dw::pi());
+            .add(Rel::exact(m.z).mul(Rel::exact(m.z)));
+        let den = Rel::exact(ax)
+            .mul(Rel::exact(ay))
+            .mul(t.mul(t))
+            .mul(Rel::pi());
         // For a unit m, t >= 1 / ALPHA_MAX^2, so t^2 stays normal; the cap only guards a
         // non-unit m.
-        let d = Dw::exact(T::ONE).div(den).value().min(T::MAX);
+        let d = Rel::exact(T::ONE).div(den).value().min(T::MAX);
         let value = above(m.z, d);
         nan_where(any_nan3(m) | ax.is_nan() | ay.is_nan(), value)
     }
@@ -196,9 +200,9 @@ pub fn d<T: Real>(n_dot_h: T, alpha: T) -> T {
     let c = n_dot_h.min(T::ONE);
     // Every rounding recovered (Dekker products, Knuth sums): the denominator's t is squared,
     // so a plain evaluation counts its rounding twice.
-    let a2 = Dw::exact(a).mul(Dw::exact(a));
-    let t = sin2_dw(c).add(Dw::exact(c).mul(Dw::exact(c)).mul(a2));
-    let d = a2.div(t.mul(t).mul(Dw::pi())).value();
+    let a2 = Rel::exact(a).mul(Rel::exact(a));
+    let t = Rel::one_minus_sq(c).add(Rel::exact(c).mul(Rel::exact(c)).mul(a2));
+    let d = a2.div(t.mul(t).mul(Rel::pi())).value();
     nan_where(a.is_nan(), above(n_dot_h, d))
 }
 

@@ -95,6 +95,8 @@ pub mod cook_torrance;
 pub mod diffuse;
 #[allow(dead_code)] // each feature uses a subset of the guards
 mod domain;
+#[allow(dead_code)] // each feature uses a subset of the double-word arithmetic
+mod dw;
 #[cfg(feature = "fresnel")]
 pub mod fresnel;
 #[cfg(feature = "ggx")]

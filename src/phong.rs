@@ -63,18 +63,10 @@
 //! phong_stability -- --nocapture`.
 
 use crate::domain::{above_horizon, in_unit, nan_unless};
+use crate::dw::Dw;
 use crate::error::{ParamError, require};
 use crate::real::Real;
 use crate::vec3::V3;
-
-// The double-word arithmetic Burley's diffuse uses, included here as phong's own private
-// module (the `phong` feature does not depend on `diffuse`).
-// `duplicate_mod`: with both features on, the file is compiled twice (diffuse::dw and
-// phong::dw, two private copies); a crate-level module would need `diffuse` for `phong`.
-#[allow(clippy::duplicate_mod)]
-#[path = "diffuse/dw.rs"]
-mod dw;
-use dw::Dw;
 
 /// 1 / (2 pi).
 const FRAC_1_2PI: f64 = 0.159_154_943_091_895_35;

@@ -82,17 +82,7 @@ pub const BOUNDS: &[Bound] = &[
     b("diffuse::oren_nayar", 3.5, 2.5, 3.5, 2.5),
     b("diffuse::burley", 0.5, 0.5, 0.5, 0.5),
     b("diffuse::burley_renormalized", 0.5, 0.5, 0.5, 0.5),
-    Bound {
-        name: "diffuse::oren_nayar_full",
-        f32: 6.0,
-        f64: 7.0,
-        f32x8: 11.5,
-        f64x4: 7.0,
-        why: "not conditioning: a chain of about 15 roundings (acos of both cosines, C3's \
-              (4 alpha beta / pi^2)^2, tan((alpha + beta) / 2)) multiplied out where both \
-              directions graze and that term dominates; f32x8 higher as the lane acos, asin \
-              are wide's polynomials, not libm; a double-word form would bring it under 4",
-    },
+    b("diffuse::oren_nayar_full", 1.5, 2.5, 1.5, 2.5),
     // Scored as error / kappa, in units of one rounding of the cosine (harness docs).
     b(
         "diffuse::oren_nayar_full (ill-conditioned)",

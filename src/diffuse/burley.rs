@@ -29,8 +29,8 @@
 //! at r = 1); elsewhere it stays below 1, and well below: 0.69 head-on at r = 1, and towards
 //! 0 at grazing for r = 0, where its F_D90 = 0.
 
-use super::dw::Dw;
 use crate::domain::{above_horizon, in_unit, nan_unless};
+use crate::dw::Dw;
 use crate::error::{ParamError, require};
 use crate::real::Real;
 use crate::vec3::V3;

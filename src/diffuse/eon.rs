@@ -36,8 +36,8 @@
 //! As everywhere in this crate, a parameter outside its domain gives NaN for every pair of
 //! directions, those below the horizon included, and a NaN input gives NaN.
 
-use super::dw::Dw;
 use crate::domain::{above_horizon, any_nan3, checked_unit, in_unit, nan_unless, nan_where};
+use crate::dw::Dw;
 use crate::error::{ParamError, require};
 use crate::real::Real;
 use crate::vec3::V3;

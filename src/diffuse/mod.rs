@@ -9,7 +9,6 @@
 //! | `eon.rs` | EON: energy-preserving Oren-Nayar, its albedo and importance sampling |
 //! | `burley.rs` | Burley's diffuse, Lagarde and de Rousiers' renormalized form |
 //! | `coupling.rs` | diffuse-Fresnel couplings |
-//! | `dw.rs` | double-word arithmetic (private), so Burley's factors round once |
 //!
 //! Conventions shared by every lobe here:
 //! - Dot-product entry points take the cosines first (`n_dot_v`, `n_dot_l`, then `v_dot_l` or
@@ -34,13 +33,13 @@
 //!   (normal = +z).
 
 use crate::domain::{above_horizon, any_nan3, in_unit, nan_unless, nan_where};
+use crate::dw::Dw;
 use crate::error::{ParamError, require};
 use crate::real::Real;
 use crate::vec3::V3;
 
 mod burley;
 mod coupling;
-mod dw;
 mod eon;
 mod oren_nayar;
 
@@ -58,8 +57,7 @@ pub use oren_nayar::*;
 /// last, once (s / t' reaches 1 / MIN_POSITIVE, too large for Dekker's split). With sigma in
 /// [0, 1] the numerator is >= 0 and at most 2.
 #[inline]
-fn fujii_shape<T: Real>(n_dot_v: T, n_dot_l: T, v_dot_l: T, sigma: T) -> (dw::Dw<T>, T) {
-    use dw::Dw;
+fn fujii_shape<T: Real>(n_dot_v: T, n_dot_l: T, v_dot_l: T, sigma: T) -> (Dw<T>, T) {
     let s = Dw::exact(v_dot_l).add(Dw::product(-n_dot_v, n_dot_l));
     // On hi, inclusive: hi = -1 with lo < 0 is below -1 (lo changes the value by less than
     // half an ULP, so clamping it away costs nothing).
@@ -78,9 +76,9 @@ fn fujii_shape<T: Real>(n_dot_v: T, n_dot_l: T, v_dot_l: T, sigma: T) -> (dw::Dw
 /// lobe here, so that each of them at zero roughness (x = 1) gives [`lambert`]'s bits.
 #[inline]
 fn rho_over_pi<T: Real>(rho: T, x: T) -> T {
-    dw::Dw::frac_1_pi()
-        .mul(dw::Dw::exact(rho))
-        .mul(dw::Dw::exact(x))
+    Dw::frac_1_pi()
+        .mul(Dw::exact(rho))
+        .mul(Dw::exact(x))
         .value()
 }
 

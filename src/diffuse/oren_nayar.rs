@@ -45,8 +45,8 @@
 //! normal view. Fujii's form stays at or below rho everywhere, reaching rho at grazing view
 //! by construction (0.9996 at theta_o = 89.9 deg, sigma = 1).
 
-use super::dw::Dw;
 use crate::domain::{above_horizon, checked_unit, in_unit, nan_unless};
+use crate::dw::Dw;
 use crate::error::{ParamError, require};
 use crate::real::Real;
 use crate::vec3::V3;
@@ -222,103 +222,162 @@ impl<T: Real> OrenNayar<T> {
     }
 }
 
-/// The full model's sigma-dependent factors.
+/// The full model's sigma-dependent factors, in double words (the constants 0.33, 0.09 and
+/// 0.13 of the paper are decimals: each is carried as its nearest f64 and the rest).
 #[derive(Clone, Copy, Debug, PartialEq)]
 struct FullCoefficients<T> {
     /// C1 = 1 - 0.5 sigma^2 / (sigma^2 + 0.33).
-    c1: T,
+    c1: Dw<T>,
     /// 0.45 sigma^2 / (sigma^2 + 0.09), the factor of C2.
-    c2: T,
+    c2: Dw<T>,
     /// 0.125 sigma^2 / (sigma^2 + 0.09), the factor of C3.
-    c3: T,
+    c3: Dw<T>,
     /// 0.17 sigma^2 / (sigma^2 + 0.13), the factor of L2.
-    l2: T,
+    l2: Dw<T>,
+}
+
+/// sigma^2 / (sigma^2 + c) in double words, c = `c_hi` + `c_tail`. sigma is capped at 2^40
+/// first: beyond, c / sigma^2 < 2^-83 changes nothing the result keeps, and sigma^2 stays
+/// far inside the range where Dekker's products are exact.
+#[inline]
+fn rational_dw<T: Real>(sigma: T, c_hi: f64, c_tail: f64) -> Dw<T> {
+    let s = checked_sigma(sigma).min(T::splat(1_099_511_627_776.0));
+    let s2 = Dw::product(s, s);
+    s2.div(s2.add(Dw::constant(c_hi, c_tail)))
 }
 
 impl<T: Real> FullCoefficients<T> {
     #[inline]
     fn new(sigma: T) -> Self {
-        let s2 = sigma_squared(sigma);
-        let k = rational(s2, 0.09);
+        let k = rational_dw(sigma, 0.09, 3.330_669_073_875_469_5e-18);
         Self {
-            c1: T::ONE - T::HALF * rational(s2, 0.33),
-            c2: T::splat(0.45) * k,
-            c3: T::splat(0.125) * k,
-            l2: T::splat(0.17) * rational(s2, 0.13),
+            c1: Dw::exact(T::ONE)
+                .add(rational_dw(sigma, 0.33, -1.554_312_234_475_219_3e-17).scale(-T::HALF)),
+            c2: k.mul(Dw::constant(0.45, -1.110_223_024_625_156_6e-17)),
+            c3: k.scale(T::splat(0.125)),
+            l2: rational_dw(sigma, 0.13, -4.440_892_098_500_626e-18)
+                .mul(Dw::constant(0.17, -1.221_245_327_087_672_2e-17)),
         }
     }
 }
 
+/// theta (2 / pi) for theta = acos(c), c in [-1, 1], in double words. Below c = 1/2 (theta
+/// above 60 degrees) as 1 - (2 / pi) asin(c): near pi / 2, where the full model's C3 and
+/// tan((alpha + beta) / 2) are largest, the rounding of asin then only touches the small
+/// (2 / pi) asin(c), not the angle, and acos(c) rounded near pi / 2 would keep an error of
+/// half an ULP of pi / 2 whatever c is. Above 1/2 the angle itself is small and acos(c) is
+/// accurate to its own last place. 2 / pi is carried to 106 bits.
+#[inline]
+fn angle_over_right_angle<T: Real>(c: T) -> Dw<T> {
+    let two_over_pi = Dw::constant(core::f64::consts::FRAC_2_PI, -3.935_735_335_036_497e-17);
+    let near_right = Dw::exact(T::ONE).add(two_over_pi.mul(Dw::exact(-c.asin())));
+    let small = two_over_pi.mul(Dw::exact(c.acos()));
+    Dw::select(c.simd_lt(T::HALF), near_right, small)
+}
+
+/// `x` clamped to [lo, hi] (working-precision bounds, the result exactly a bound where the
+/// leading part reaches it).
+#[inline]
+fn clamp_dw<T: Real>(x: Dw<T>, lo: T, hi: T) -> Dw<T> {
+    let x = Dw::select(x.hi.simd_ge(hi), Dw::exact(hi), x);
+    Dw::select(x.hi.simd_le(lo), Dw::exact(lo), x)
+}
+
 #[inline]
 fn full_kernel<T: Real>(n_dot_v: T, n_dot_l: T, v_dot_l: T, rho: T, k: FullCoefficients<T>) -> T {
-    let two_over_pi = T::TWO * T::FRAC_1_PI;
+    // The whole of L1 and L2 is carried in double words and rounded once, at the end: where
+    // both directions graze, C3 tan((alpha + beta) / 2) and cos(phi) C2 tan(beta) grow like
+    // 1 / cos and are each a product of half a dozen factors (the angles, the sigma factor,
+    // the half-angle tangent, cos(phi)), whose roundings would otherwise add up to 6 ULP.
+    //
     // Cosines slightly above 1 (rounding in the caller's dot products) would make acos NaN.
     let (cv, cl) = (n_dot_v.min(T::ONE), n_dot_l.min(T::ONE));
-    let sin_v = ((T::ONE - cv) * (T::ONE + cv)).sqrt_nonneg();
-    let sin_l = ((T::ONE - cl) * (T::ONE + cl)).sqrt_nonneg();
-    // alpha is the larger polar angle (smaller cosine), beta the smaller; sin is monotonic
-    // on [0, pi/2], so the sines sort the same way.
+    let one = Dw::exact(T::ONE);
+    let sin2_v = one.add(Dw::product(-cv, cv));
+    let sin2_l = one.add(Dw::product(-cl, cl));
+    let (sin_v, sin_l) = (sin2_v.sqrt(), sin2_l.sqrt());
+    // alpha is the larger polar angle (smaller cosine), beta the smaller.
+    let v_is_alpha = cv.simd_le(cl);
     let (cos_alpha, cos_beta) = (cv.min(cl), cv.max(cl));
-    let (sin_alpha, sin_beta) = (sin_v.max(sin_l), sin_v.min(sin_l));
-    let (alpha, beta) = (cos_alpha.acos(), cos_beta.acos());
+    let sin_alpha = Dw::select(v_is_alpha, sin_v, sin_l);
+    let sin_beta = Dw::select(v_is_alpha, sin_l, sin_v);
+    // a = 2 alpha / pi, b = 2 beta / pi.
+    let a = angle_over_right_angle(cos_alpha);
+    let b = angle_over_right_angle(cos_beta);
     // cos(phi) = s / (sin(theta_i) sin(theta_o)). At a pole phi is undefined, but beta = 0
     // there and every term that cos(phi) multiplies vanishes with beta, so 0 is as good as
     // any value (s * 0 keeps a NaN v.l visible). Rounding can push the ratio past +-1 near
     // the poles: the clamp keeps (1 - |cos(phi)|) >= 0.
-    let s = azimuth_term(n_dot_v, n_dot_l, v_dot_l);
-    let sin_product = sin_v * sin_l;
-    let cos_phi = T::select(sin_product.simd_gt(T::ZERO), s / sin_product, s * T::ZERO)
-        .clamp(-T::ONE, T::ONE);
+    let s = Dw::exact(v_dot_l).add(Dw::product(-n_dot_v, n_dot_l));
+    let sin_product = sin_v.mul(sin_l);
+    let at_pole = !sin_product.hi.simd_gt(T::ZERO);
+    let safe_product = Dw::select(at_pole, one, sin_product);
+    let cos_phi = Dw::select(at_pole, Dw::exact(s.hi * T::ZERO), s.div(safe_product));
+    let cos_phi = clamp_dw(cos_phi, -T::ONE, T::ONE);
     // 1 - |cos(phi)| = G / (P (P + |s|)) with P = sin_v sin_l and the Gram determinant
-    // G = P^2 - s^2 = (1 - cv^2)(1 - cl^2) - s^2 formed in double words: as 1 - |s / P| it
-    // cancels for opposite grazing directions (cos(phi) -> -1), where it multiplies the
-    // unbounded tan((alpha + beta) / 2). 1 at a pole (cos(phi) = 0 there, above).
-    let one = Dw::exact(T::ONE);
-    let sin2_v = one.add(Dw::product(-cv, cv));
-    let sin2_l = one.add(Dw::product(-cl, cl));
-    let s_dw = Dw::exact(v_dot_l).add(Dw::product(-n_dot_v, n_dot_l));
-    let minus_s = Dw {
-        hi: -s_dw.hi,
-        lo: -s_dw.lo,
-    };
-    let gram = sin2_v.mul(sin2_l).add(s_dw.mul(minus_s));
-    let one_minus_abs_cos_phi = T::select(
-        sin_product.simd_gt(T::ZERO),
-        gram.value().max(T::ZERO) / (sin_product * (sin_product + s.abs())),
-        T::ONE,
-    )
-    .min(T::ONE);
-    let tan_beta = sin_beta / guard_denominator(cos_beta);
-    // tan((alpha + beta) / 2) by the half-angle identity (sin a + sin b) / (cos a + cos b).
-    let tan_half = (sin_alpha + sin_beta) / guard_denominator(cos_alpha + cos_beta);
-    let b = beta * two_over_pi;
-    // C2: sin(alpha) where cos(phi) >= 0, sin(alpha) - (2 beta / pi)^3 where cos(phi) < 0.
-    // Near grazing both terms tend to 1 and their difference (about 6 cos(beta) / pi) is
-    // then multiplied by tan(beta) ~ 1 / cos(beta): as written it loses every digit (10^4
-    // ULP at cos = 1e-5). With x = 1 - 2 beta / pi = (2 / pi) asin(cos(beta)) and
+    // G = P^2 - s^2 = (1 - cv^2)(1 - cl^2) - s^2: as 1 - |s / P| it cancels for opposite
+    // grazing directions (cos(phi) -> -1), where it multiplies the unbounded
+    // tan((alpha + beta) / 2). 1 at a pole (cos(phi) = 0 there, above).
+    let abs_s = Dw::select(s.hi.simd_lt(T::ZERO), s.neg(), s);
+    let gram = sin2_v.mul(sin2_l).add(s.mul(s.neg()));
+    let gram = Dw::select(gram.hi.simd_lt(T::ZERO), Dw::exact(T::ZERO), gram);
+    let one_minus_abs_cos_phi = Dw::select(
+        at_pole,
+        one,
+        gram.div(safe_product.mul(safe_product.add(abs_s))),
+    );
+    let one_minus_abs_cos_phi = clamp_dw(one_minus_abs_cos_phi, T::ZERO, T::ONE);
+    // Grazing cosines are clamped up to the smallest normal float in the denominators, so the
+    // tangents stay finite (below 2 / MIN_POSITIVE).
+    let tan_beta = sin_beta.div(Dw::exact(guard_denominator(cos_beta)));
+    // tan((alpha + beta) / 2) by the half-angle identity (sin a + sin b) / (cos a + cos b),
+    // the denominator exact.
+    let cos_sum = Dw::sum(cos_alpha, cos_beta);
+    let cos_sum = Dw::select(
+        cos_sum.hi.simd_lt(T::MIN_POSITIVE),
+        Dw::exact(T::MIN_POSITIVE),
+        cos_sum,
+    );
+    let tan_half = sin_alpha.add(sin_beta).div(cos_sum);
+    // C2: sin(alpha) where cos(phi) >= 0, sin(alpha) - b^3 where cos(phi) < 0. Near grazing
+    // both terms tend to 1 and their difference (about 6 cos(beta) / pi) is then multiplied
+    // by tan(beta) ~ 1 / cos(beta): as written it loses every digit (10^4 ULP at
+    // cos = 1e-5). With x = 1 - b = (2 / pi) asin(cos(beta)) and
     // 1 - sin(alpha) = cos^2(alpha) / (1 + sin(alpha)) the difference is
     // x (3 - 3 x + x^2) - cos^2(alpha) / (1 + sin(alpha)), with no cancellation for
-    // beta > 60 degrees; below, the plain form is accurate ((2 beta / pi)^3 <= 0.3).
-    let x = cos_beta.asin() * two_over_pi;
-    let grazing_difference = x * (T::splat(3.0) - T::splat(3.0) * x + x * x)
-        - cos_alpha * cos_alpha / (T::ONE + sin_alpha);
-    let difference = T::select(
+    // beta > 60 degrees; below, the plain form is accurate (b^3 <= 0.3).
+    let x = one.add(b.neg());
+    let cubic = x.mul(Dw::exact(T::splat(3.0)).add(x.mul(Dw::exact(T::splat(-3.0)).add(x))));
+    let grazing_difference = cubic.add(Dw::square(cos_alpha).div(one.add(sin_alpha)).neg());
+    let difference = Dw::select(
         cos_beta.simd_lt(T::HALF),
         grazing_difference,
-        sin_alpha - b * b * b,
+        sin_alpha.add(b.sq().mul(b).neg()),
     );
-    let c2 = k.c2 * T::select(cos_phi.simd_ge(T::ZERO), sin_alpha, difference);
-    // 4 / pi^2 as one constant: two roundings fewer than 4 (1/pi)(1/pi).
-    let ab = alpha * beta * T::splat(0.405_284_734_569_351_1);
-    let c3 = k.c3 * ab * ab;
-    let l1 = k.c1 + cos_phi * c2 * tan_beta + one_minus_abs_cos_phi * c3 * tan_half;
+    let c2 = k.c2.mul(Dw::select(
+        cos_phi.hi.simd_ge(T::ZERO),
+        sin_alpha,
+        difference,
+    ));
+    // C3 = 0.125 sigma^2 / (sigma^2 + 0.09) (4 alpha beta / pi^2)^2 = k.c3 (a b)^2.
+    let c3 = k.c3.mul(a.mul(b).sq());
+    let l1 =
+        k.c1.add(cos_phi.mul(c2).mul(tan_beta))
+            .add(one_minus_abs_cos_phi.mul(c3).mul(tan_half));
     // The fit goes negative for sigma above about 0.65 with both directions near grazing on
-    // opposite sides (cos(phi) < 0: sin(alpha) - (2 beta / pi)^3 -> 6 eps / pi while
-    // tan(beta) -> 1 / eps); the surface it approximates reflects nothing negative.
-    let l1 = l1.max(T::ZERO);
-    let l2 = rho * k.l2 * (T::ONE - cos_phi * b * b);
-    let value = super::rho_over_pi(rho, l1 + l2);
-    nan_from(v_dot_l + rho + k.c1, above_horizon(n_dot_v, n_dot_l, value))
+    // opposite sides (cos(phi) < 0: sin(alpha) - b^3 -> 6 eps / pi while tan(beta) ->
+    // 1 / eps); the surface it approximates reflects nothing negative.
+    let l1 = Dw::select(l1.hi.simd_lt(T::ZERO), Dw::exact(T::ZERO), l1);
+    let l2 = Dw::exact(rho)
+        .mul(k.l2)
+        .mul(one.add(cos_phi.mul(b.sq()).neg()));
+    // rho / pi (L1 + L2), rounded once: with sigma = 0 L1 + L2 is exactly 1 and this is
+    // Lambert's rho / pi, bit for bit.
+    let value = Dw::frac_1_pi().mul(Dw::exact(rho)).mul(l1.add(l2)).value();
+    nan_from(
+        v_dot_l + rho + k.c1.hi,
+        above_horizon(n_dot_v, n_dot_l, value),
+    )
 }
 
 /// Oren-Nayar's full model: the direct term L1 with the C1, C2, C3 coefficients plus the
@@ -359,13 +418,17 @@ fn full_kernel<T: Real>(n_dot_v: T, n_dot_l: T, v_dot_l: T, rho: T, k: FullCoeff
 /// exactly. At phi = 0 it equals the qualitative model plus L2 exactly. The model is
 /// reciprocal; it gains energy at grazing view for rho = 1 (see the module table).
 ///
-/// Accuracy against the paper's angle form evaluated in MPFR (`cargo test -p brdf-oracle --release --test lobes -- --nocapture`): max 5.85 ULP (f32),
-/// 6.65 (f64), 11.0 (f32x8, whose `acos`, `asin` and `tan` are polynomial lane functions, not
-/// libm's) and 6.65 (f64x4). The difference sin(alpha) - (2 beta / pi)^3 and 1 - |cos(phi)|,
-/// which as written lose every digit near grazing (10^4 ULP), are computed without
-/// cancellation; what remains is the chain of about 15 roundings of C3 tan((alpha + beta) / 2)
-/// where both directions graze, not the function's conditioning. Where it is ill-conditioned
-/// (L1's terms cancelling) the error is within 0.03 of the change one rounding of n.v causes.
+/// Accuracy against the paper's angle form evaluated in MPFR (`cargo test -p brdf-oracle
+/// --release --test lobes -- --nocapture oren_nayar_full`): max 1.36 ULP (f32), 2.15 (f64),
+/// 1.36 (f32x8) and 2.15 (f64x4). L1 and L2 are carried in double words and rounded once, so
+/// the products that grow without bound where both directions graze (C3 tan((alpha + beta) /
+/// 2), cos(phi) C2 tan(beta)) do not accumulate their factors' roundings; the angles enter as
+/// 2 theta / pi = 1 - (2 / pi) asin(cos(theta)) above 60 degrees, so the lane types'
+/// polynomial `asin` and `acos` (1 to 3 ULP) touch only a small correction there. The
+/// difference sin(alpha) - (2 beta / pi)^3 and 1 - |cos(phi)|, which as written lose every
+/// digit near grazing (10^4 ULP), are computed without cancellation. Where the function is
+/// ill-conditioned (L1's terms cancelling) the error is within 0.03 of the change one rounding
+/// of n.v causes. Cost: about 45 double-word operations besides asin and acos of both cosines.
 ///
 /// Source: Oren and Nayar 1994, "Generalization of Lambert's Reflectance Model", SIGGRAPH,
 /// section 4 (the functional approximation of L1 and the interreflection term L2).
