@@ -6,6 +6,12 @@
 //! Rough Surfaces" (EGSR), eqs. 25-27; Heitz 2014, "Understanding the Masking-Shadowing Function
 //! in Microfacet-Based BRDFs" (JCGT 3(2)), eqs. 80-83.
 //!
+//! Roughness: every `alpha` here is the Beckmann width alpha, the RMS slope of the microsurface
+//! (Walter et al. 2007's alpha_b), not the perceptual roughness r of a material slider. For a
+//! slider value use alpha = r^2 ([`alpha_from_perceptual`], the same mapping as for GGX), or
+//! [`alpha_from_blinn_phong`] for a Blinn-Phong exponent. The
+//! [roughness conventions](crate::microfacet#roughness-conventions) tabulate engines' names.
+//!
 //! Same conventions as the `ggx` module: free functions of dot products with cosines clamped to
 //! [0, 1], the [`Beckmann`] type on local-frame vectors, alpha clamped to
 //! [`ALPHA_MIN`](crate::microfacet::ALPHA_MIN), [`ALPHA_MAX`](crate::microfacet::ALPHA_MAX)
@@ -35,6 +41,8 @@
 //!
 //! (The lanes' exp is a polynomial within 1 ULP (f32x8) / 2 ULP (f64x4) of the scalar one;
 //! see `crate::real`.)
+//!
+//! [`alpha_from_perceptual`]: crate::microfacet::alpha_from_perceptual
 
 use crate::domain::{any_nan3, nan_where};
 use crate::dw::{Rel, two_prod, two_sum};
@@ -216,8 +224,11 @@ fn g1_from<T: Real>(x: Arg<T>) -> T {
     T::select(x.tiny, via_lambda, direct)
 }
 
-/// The Beckmann distribution with roughness alpha_x along local x and alpha_y along y (alpha is
-/// the RMS slope).
+/// The Beckmann distribution with width alpha_x along local x and alpha_y along y (alpha is
+/// the RMS slope, not perceptual roughness; see [`alpha_from_perceptual`] and
+/// [`alpha_from_blinn_phong`]).
+///
+/// [`alpha_from_perceptual`]: crate::microfacet::alpha_from_perceptual
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Beckmann<T> {
     alpha_x: T,
@@ -255,7 +266,8 @@ impl<T: Real> Beckmann<T> {
         self.alpha_y
     }
 
-    /// An isotropic Beckmann; same validation as [`Beckmann::new`].
+    /// An isotropic Beckmann, `alpha_x = alpha_y = alpha` (the RMS slope, not perceptual
+    /// roughness); same validation as [`Beckmann::new`].
     pub fn isotropic(alpha: T) -> Result<Self, ParamError> {
         Self::new(alpha, alpha)
     }
@@ -338,13 +350,17 @@ impl<T: Real> Microfacet<T> for Beckmann<T> {
 /// tan^2 = (1 - c^2) / c^2 (Walter et al. 2007 eq. 25). Peak 1 / (pi alpha^2) at c = 1.
 ///
 /// Domain: n_dot_h in [-1, 1] (above 1 is clamped to 1; <= 0 gives 0), alpha in [0, +inf)
-/// finite, clamped to [ALPHA_MIN, ALPHA_MAX]. NaN for NaN input, alpha < 0 or +inf.
+/// finite, clamped to [ALPHA_MIN, ALPHA_MAX]. NaN for NaN input, alpha < 0 or +inf. `alpha` is
+/// the RMS slope, not perceptual roughness (from a slider value r: alpha = r^2,
+/// [`alpha_from_perceptual`]).
 ///
 /// exp(-E) turns a relative error in E into an absolute one E times larger; E is therefore
 /// carried with the error of each rounding recovered by Dekker's exact products and the
 /// division remainder, D is exp(-E_hi) (1 - E_lo) / (pi alpha^2 c^4) with the denominator's
 /// roundings recovered too, and the whole is rounded once (about 150 extra flops): within
 /// 1.2 ULP, exp's own error included (module docs).
+///
+/// [`alpha_from_perceptual`]: crate::microfacet::alpha_from_perceptual
 #[inline]
 #[must_use]
 pub fn d<T: Real>(n_dot_h: T, alpha: T) -> T {
@@ -357,10 +373,11 @@ pub fn d<T: Real>(n_dot_h: T, alpha: T) -> T {
 }
 
 /// a = c / (alpha sqrt(1 - c^2)) = 1 / (alpha tan(theta)): the argument of every Beckmann
-/// Smith term. Domain: n_dot_v in [-1, 1] (|c| is used, clamped to 1), alpha in [0, +inf)
-/// finite, clamped to [ALPHA_MIN, ALPHA_MAX]; NaN for NaN input, alpha < 0 or +inf. The pole
-/// at |c| = 1 is capped at the largest finite value; 0 at c = 0. Within about 1 ULP (the square
-/// root of the exactly carried a^2, its own rounding recovered).
+/// Smith term. Domain: n_dot_v in [-1, 1] (|c| is used, clamped to 1), alpha (the RMS slope, as
+/// in [`d`]; not perceptual roughness) in [0, +inf) finite, clamped to [ALPHA_MIN, ALPHA_MAX];
+/// NaN for NaN input, alpha < 0 or +inf. The pole at |c| = 1 is capped at the largest finite
+/// value; 0 at c = 0. Within about 1 ULP (the square root of the exactly carried a^2, its own
+/// rounding recovered).
 #[inline]
 #[must_use]
 pub fn a_of<T: Real>(n_dot_v: T, alpha: T) -> T {
@@ -426,9 +443,9 @@ fn sqrt_dw<T: Real>(x: Rel<T>) -> T {
 /// 7.1.14; a Chebyshev series on [0, 4], the continued fraction above), and a^2 carried
 /// exactly into exp.
 ///
-/// Domain: as [`a_of`]. Edges: the pole at n_dot_v = 0 is capped at the largest finite value
-/// (G1 = 1 / (1 + MAX) = 0 exactly), 0 at |n_dot_v| = 1. Within 3.2 ULP (f32) / 3.5 ULP
-/// (f64), module docs.
+/// Domain: as [`a_of`] (alpha the RMS slope, not perceptual roughness). Edges: the pole at
+/// n_dot_v = 0 is capped at the largest finite value (G1 = 1 / (1 + MAX) = 0 exactly), 0 at
+/// |n_dot_v| = 1. Within 3.2 ULP (f32) / 3.5 ULP (f64), module docs.
 #[inline]
 #[must_use]
 pub fn lambda<T: Real>(n_dot_v: T, alpha: T) -> T {
@@ -437,8 +454,8 @@ pub fn lambda<T: Real>(n_dot_v: T, alpha: T) -> T {
 
 /// Smith G1 = 1 / (1 + [`lambda`]) of the isotropic Beckmann distribution, evaluated as
 /// a (a + K) / (a (a + K) + P) in the notation of [`lambda`] (one rounding fewer). Same
-/// domain; 0 at n_dot_v = 0, 1 at |n_dot_v| = 1; NaN for NaN input or alpha < 0 or +inf.
-/// Within 3.7 ULP (f32) / 2.8 ULP (f64), module docs.
+/// domain (alpha the RMS slope, as in [`d`]); 0 at n_dot_v = 0, 1 at |n_dot_v| = 1; NaN for
+/// NaN input or alpha < 0 or +inf. Within 3.7 ULP (f32) / 2.8 ULP (f64), module docs.
 #[inline]
 #[must_use]
 pub fn g1<T: Real>(n_dot_v: T, alpha: T) -> T {
@@ -449,8 +466,9 @@ pub fn g1<T: Real>(n_dot_v: T, alpha: T) -> T {
 /// the G1 fit (3.535 a + 2.181 a^2) / (1 + 2.276 a + 2.577 a^2) written as Lambda = 1/G1 - 1):
 /// Lambda ~ (1 - 1.259 a + 0.396 a^2) / (3.535 a + 2.181 a^2) for a < 1.6, 0 beyond.
 /// Approximation: the resulting G1 is within 0.31% (relative) of the exact one for alpha and
-/// NoV in [0.01, 1] (`cargo test --test smith_approximations -- --nocapture`). Clamped at 0 (the numerator crosses zero
-/// just below a = 1.6).
+/// NoV in [0.01, 1] (`cargo test --test smith_approximations -- --nocapture`). Clamped at 0
+/// (the numerator crosses zero just below a = 1.6). alpha as [`d`] (the RMS slope, not
+/// perceptual roughness).
 #[inline]
 #[must_use]
 pub fn lambda_walter<T: Real>(n_dot_v: T, alpha: T) -> T {
@@ -464,7 +482,8 @@ pub fn lambda_walter<T: Real>(n_dot_v: T, alpha: T) -> T {
 }
 
 /// Blinn-Phong exponent n to the Beckmann alpha with the same lobe shape near the peak:
-/// alpha = sqrt(2 / (n + 2)) (Walter et al. 2007, section 5.2). Domain n in [0, +inf]
+/// alpha = sqrt(2 / (n + 2)) (Walter et al. 2007, section 5.2). The result is an alpha (RMS
+/// slope) for [`d`] and [`Beckmann`], not a perceptual roughness. Domain n in [0, +inf]
 /// (n = 0 gives alpha = 1, n = +inf gives 0); n < 0 or NaN gives NaN. Within 1 ULP.
 #[inline]
 #[must_use]

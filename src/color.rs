@@ -59,9 +59,9 @@ pub fn mul<T: Real>(m: &Mat3, c: V3<T>) -> V3<T> {
 /// base. Against the standard's formula in 300-bit arithmetic (mpmath; 2,300 points per type:
 /// uniform on [0, 1] and [0, 0.05], log-uniform down to 1e-26, 40 neighbours of each
 /// breakpoint, 0, subnormals, 1, 2, 100): within 1 ulp in f32 and f32x8 (every point
-/// correctly rounded or 1 ulp off), 3.4 ulps in f64 and f64x4. OETF(EOTF(x)) is within 1 ulp of x in f32 and 2 in
-/// f64 over [0, 1] outside the seam's interval (0.040449936, 0.04045], and every 8- and
-/// 16-bit code round-trips exactly (`cargo test --test color_transfer -- --nocapture`).
+/// correctly rounded or 1 ulp off), 3.4 ulps in f64 and f64x4. OETF(EOTF(x)) is within 1 ulp
+/// of x in f32 and 2 in f64 over [0, 1] outside the seam's interval (0.040449936, 0.04045],
+/// and every 8- and 16-bit code round-trips exactly (`cargo test --test color_transfer -- --nocapture`).
 /// [`srgb_oetf_fast`] is the plain single-`pow` form in the input's own precision.
 ///
 /// Domain: every value. Negative input (and -inf) is clamped to 0 (a documented input clamp:

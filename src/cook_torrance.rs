@@ -12,6 +12,12 @@
 //! directional albedo is below 1 and falls with roughness, since single scattering drops the
 //! light that bounces more than once between microfacets (`tests/cook_torrance_energy.rs`
 //! prints the loss).
+//!
+//! Entry points: [`eval`] and [`eval_rgb`] on directions with any Fresnel closure; the
+//! shader-style dot-product forms `ggx` and `beckmann` with a precomputed F; and, for the
+//! common full BRDFs, `ggx_conductor_rgb` (a metal from RGB eta and k), `ggx_schlick_rgb`
+//! (glTF / Filament: Schlick with an RGB F0) and `ggx_dielectric` (the exact dielectric
+//! Fresnel of eta), with the same three for Beckmann (`beckmann_conductor_rgb`, ...).
 
 use crate::domain::{above_horizon, any_nan3, nan_where};
 use crate::fresnel;
@@ -108,8 +114,16 @@ pub fn eval_rgb<T: Real, M: Microfacet<T> + ?Sized>(
 #[inline]
 #[must_use]
 pub fn ggx<T: Real>(n_dot_h: T, n_dot_v: T, n_dot_l: T, alpha: T, fresnel: T) -> T {
-    let dv = crate::ggx::d(n_dot_h, alpha) * crate::ggx::v_correlated(n_dot_v, n_dot_l, alpha);
+    let dv = ggx_dv(n_dot_h, n_dot_v, n_dot_l, alpha);
     assemble(dv, n_dot_h, n_dot_v, n_dot_l, alpha, fresnel)
+}
+
+/// D V of the isotropic GGX (uncapped; [`assemble`] caps it): shared by [`ggx`] and its
+/// Fresnel-specific forms so that they agree bit for bit.
+#[cfg(feature = "ggx")]
+#[inline]
+fn ggx_dv<T: Real>(n_dot_h: T, n_dot_v: T, n_dot_l: T, alpha: T) -> T {
+    crate::ggx::d(n_dot_h, alpha) * crate::ggx::v_correlated(n_dot_v, n_dot_l, alpha)
 }
 
 /// (D V capped at MAX) F capped at MAX, 0 below the horizon, NaN for NaN input, alpha outside
@@ -127,16 +141,24 @@ fn assemble<T: Real>(dv: T, n_dot_h: T, n_dot_v: T, n_dot_l: T, alpha: T, fresne
 /// Dot-product entry point of isotropic Beckmann Cook-Torrance with the height-correlated
 /// Smith G2 = 1 / (1 + Lambda(v) + Lambda(l)): f = D G2 F / (4 n.l n.v), evaluated as
 /// D F / (4 (n.l n.v + n.l n.v Lambda(v) + n.v n.l Lambda(l))) so that grazing cosines give
-/// 0 instead of 0 / 0. Domain, edges and caps as [`ggx`].
+/// 0 instead of 0 / 0. Domain, edges and caps as `ggx`.
 #[cfg(feature = "beckmann")]
 #[inline]
 #[must_use]
 pub fn beckmann<T: Real>(n_dot_h: T, n_dot_v: T, n_dot_l: T, alpha: T, fresnel: T) -> T {
+    let dv = beckmann_dv(n_dot_h, n_dot_v, n_dot_l, alpha);
+    assemble(dv, n_dot_h, n_dot_v, n_dot_l, alpha, fresnel)
+}
+
+/// D V of the isotropic Beckmann (uncapped; [`assemble`] caps it): shared by [`beckmann`] and
+/// its Fresnel-specific forms so that they agree bit for bit.
+#[cfg(feature = "beckmann")]
+#[inline]
+fn beckmann_dv<T: Real>(n_dot_h: T, n_dot_v: T, n_dot_l: T, alpha: T) -> T {
     let (cv, cl) = (n_dot_v.saturate(), n_dot_l.saturate());
     let dist = crate::beckmann::Beckmann::new_unchecked(alpha, alpha);
     let (wv, wl) = (cosine_direction(cv), cosine_direction(cl));
-    let dv = crate::beckmann::d(n_dot_h, alpha) * dist.v_correlated(wv, wl);
-    assemble(dv, n_dot_h, n_dot_v, n_dot_l, alpha, fresnel)
+    crate::beckmann::d(n_dot_h, alpha) * dist.v_correlated(wv, wl)
 }
 
 /// A unit direction with cos(theta) = c in the xz plane (isotropic terms depend on c only).
@@ -144,4 +166,225 @@ pub fn beckmann<T: Real>(n_dot_h: T, n_dot_v: T, n_dot_l: T, alpha: T, fresnel: 
 #[inline]
 fn cosine_direction<T: Real>(c: T) -> V3<T> {
     V3::new(((T::ONE - c) * (T::ONE + c)).sqrt_nonneg(), T::ZERO, c)
+}
+
+/// The RGB tail of the Fresnel-specific entry points: [`assemble`] once per channel with the
+/// same D V, so each channel equals the scalar entry point with that channel's F bit for bit.
+#[cfg(any(feature = "ggx", feature = "beckmann"))]
+#[inline]
+fn assemble_rgb<T: Real>(dv: T, n_dot_h: T, n_dot_v: T, n_dot_l: T, alpha: T, f: V3<T>) -> V3<T> {
+    let ch = |f: T| assemble(dv, n_dot_h, n_dot_v, n_dot_l, alpha, f);
+    V3::new(ch(f.x), ch(f.y), ch(f.z))
+}
+
+/// Rough conductor (metal), isotropic GGX, RGB: per channel c (x = r, y = g, z = b),
+/// f_c = D(n.h) V(n.v, n.l) F_c with the exact conductor Fresnel
+/// F_c = [`fresnel::conductor`](v.h, eta_c, k_c) of the complex IOR eta_c + i k_c.
+///
+/// Each channel equals [`ggx`]`(n_dot_h, n_dot_v, n_dot_l, alpha,
+/// fresnel::conductor(v_dot_h, eta.c, k.c))` bit for bit; D V is evaluated once. The
+/// direction-vector form is [`eval_rgb`] with [`fresnel::conductor_rgb`].
+///
+/// Domain: cosines in [-1, 1]; n.v and n.l clamped to [0, 1] (0 where either is <= 0); v.h
+/// clamped to [0, 1] (for a reflection v.h = |v + l| / 2 >= 0); alpha in [0, +inf) finite,
+/// clamped to [ALPHA_MIN, ALPHA_MAX]; per channel eta in (0, MAX] and k in [0, MAX]. NaN for a
+/// NaN input or alpha < 0 or +inf (every channel), and in a channel whose eta or k is outside
+/// its domain. Never inf: D V and D V F are capped at the largest finite value.
+///
+/// Sources: Cook and Torrance 1982, "A Reflectance Model for Computer Graphics"; Walter et al.
+/// 2007, "Microfacet Models for Refraction through Rough Surfaces" (GGX D, eq. 33; the 1/4
+/// Jacobian, eq. 20); Heitz 2014, "Understanding the Masking-Shadowing Function in
+/// Microfacet-Based BRDFs" (height-correlated G2, eq. 99); Born and Wolf, "Principles of
+/// Optics", section 14.2 (reflection at a conducting surface).
+///
+/// ```
+/// use brdf::{V3, cook_torrance};
+/// // A gold-like conductor: red and green reflect more than blue.
+/// let (eta, k) = (V3::new(0.18, 0.42, 1.37), V3::new(3.42, 2.35, 1.77));
+/// let f = cook_torrance::ggx_conductor_rgb(0.95, 0.8, 0.7, 0.9, 0.3, eta, k);
+/// assert!(f.x > f.z && f.y > f.z && f.z > 0.0);
+/// // Below the horizon: nothing.
+/// let dark = cook_torrance::ggx_conductor_rgb(0.95, 0.8, -0.1, 0.9, 0.3, eta, k);
+/// assert_eq!(dark, V3::splat(0.0));
+/// ```
+#[cfg(feature = "ggx")]
+#[inline]
+#[must_use]
+pub fn ggx_conductor_rgb<T: Real>(
+    n_dot_h: T,
+    n_dot_v: T,
+    n_dot_l: T,
+    v_dot_h: T,
+    alpha: T,
+    eta: V3<T>,
+    k: V3<T>,
+) -> V3<T> {
+    let f = fresnel::conductor_rgb(v_dot_h.saturate(), eta, k);
+    let dv = ggx_dv(n_dot_h, n_dot_v, n_dot_l, alpha);
+    assemble_rgb(dv, n_dot_h, n_dot_v, n_dot_l, alpha, f)
+}
+
+/// Isotropic GGX with Schlick's Fresnel of an RGB F0, the glTF 2.0 / Filament / Unreal
+/// specular: per channel c, f_c = D(n.h) V(n.v, n.l) (F0_c + (1 - F0_c)(1 - v.h)^5)
+/// ([`fresnel::schlick_rgb`]). For glTF's metallic-roughness model F0 = lerp(0.04,
+/// base_color, metallic) and alpha = roughness^2.
+///
+/// Each channel equals [`ggx`]`(n_dot_h, n_dot_v, n_dot_l, alpha, fresnel::schlick(f0.c,
+/// v_dot_h))` bit for bit. Domain and edges as [`ggx_conductor_rgb`], with F0 in [0, 1] per
+/// channel (outside, and NaN, give NaN in that channel).
+///
+/// Sources: as [`ggx_conductor_rgb`], with Schlick 1994, "An Inexpensive BRDF Model for
+/// Physically-based Rendering" (eq. 15) for F; the shader form is Filament's
+/// `D_GGX * V_SmithGGXCorrelated * F_Schlick`.
+///
+/// ```
+/// use brdf::{V3, cook_torrance};
+/// let f0 = V3::new(0.04, 0.04, 0.04); // a glTF dielectric base
+/// let f = cook_torrance::ggx_schlick_rgb(1.0, 1.0, 1.0, 1.0, 0.5, f0);
+/// // At normal incidence on a mirror-aligned facet: D(1) = 1 / (pi alpha^2), V = 1 / 4, F = F0.
+/// let expected = 0.04 / (core::f64::consts::PI * 0.25) / 4.0;
+/// assert!((f.x - expected).abs() < 1e-15);
+/// ```
+#[cfg(feature = "ggx")]
+#[inline]
+#[must_use]
+pub fn ggx_schlick_rgb<T: Real>(
+    n_dot_h: T,
+    n_dot_v: T,
+    n_dot_l: T,
+    v_dot_h: T,
+    alpha: T,
+    f0: V3<T>,
+) -> V3<T> {
+    let f = fresnel::schlick_rgb(f0, v_dot_h.saturate());
+    let dv = ggx_dv(n_dot_h, n_dot_v, n_dot_l, alpha);
+    assemble_rgb(dv, n_dot_h, n_dot_v, n_dot_l, alpha, f)
+}
+
+/// Rough dielectric reflection (the specular layer of plastic, glass, water), isotropic GGX:
+/// f = D(n.h) V(n.v, n.l) F with the exact unpolarized dielectric Fresnel
+/// F = [`fresnel::dielectric`](v.h, eta) of the relative IOR eta = n_inside / n_outside.
+/// eta < 1 (the view inside the denser medium) gives total internal reflection, F = 1, past
+/// the critical angle.
+///
+/// Equals [`ggx`]`(n_dot_h, n_dot_v, n_dot_l, alpha, fresnel::dielectric(v_dot_h, eta))` bit
+/// for bit for v.h in [0, 1]. Domain and edges as [`ggx_conductor_rgb`], with eta in (0, MAX]
+/// (eta <= 0, +inf and NaN give NaN). v.h is clamped to [0, 1] before the Fresnel term, so a
+/// rounding-negative v.h never selects [`fresnel::dielectric`]'s "light from the other side"
+/// branch.
+///
+/// A colour that scales the specular reflection (a tint multiplying F) is `tint * f` with
+/// `tint: V3<T>`, exact channel by channel. glTF's `KHR_materials_specular` tints F0 of a
+/// Schlick form instead: that is [`ggx_schlick_rgb`].
+///
+/// Sources: as [`ggx_conductor_rgb`]; the Fresnel equations for dielectrics, Born and Wolf,
+/// "Principles of Optics", section 1.5.
+///
+/// ```
+/// use brdf::cook_torrance;
+/// // Glass (eta = 1.5) at normal incidence: F = ((eta - 1) / (eta + 1))^2 = 0.04.
+/// let f = cook_torrance::ggx_dielectric(1.0, 1.0, 1.0, 1.0, 0.5, 1.5);
+/// let expected = 0.04 / (core::f64::consts::PI * 0.25) / 4.0;
+/// assert!((f - expected).abs() < 1e-15);
+/// ```
+#[cfg(feature = "ggx")]
+#[inline]
+#[must_use]
+pub fn ggx_dielectric<T: Real>(
+    n_dot_h: T,
+    n_dot_v: T,
+    n_dot_l: T,
+    v_dot_h: T,
+    alpha: T,
+    eta: T,
+) -> T {
+    let f = fresnel::dielectric(v_dot_h.saturate(), eta);
+    let dv = ggx_dv(n_dot_h, n_dot_v, n_dot_l, alpha);
+    assemble(dv, n_dot_h, n_dot_v, n_dot_l, alpha, f)
+}
+
+/// `ggx_conductor_rgb` with the Beckmann NDF and its height-correlated Smith G2 (the D V
+/// of [`beckmann`]): per channel f_c = D(n.h) G2 F_c(v.h; eta_c, k_c) / (4 n.l n.v), each
+/// channel equal to [`beckmann`] with `fresnel::conductor(v_dot_h, eta.c, k.c)` bit for bit.
+/// Domain (as `ggx_conductor_rgb`): cosines in [-1, 1], n.v and n.l clamped to [0, 1] (0 where
+/// either is <= 0), v.h clamped to [0, 1]; alpha in [0, +inf) finite, clamped to [ALPHA_MIN,
+/// ALPHA_MAX]; per channel eta in (0, MAX], k in [0, MAX]. NaN for a NaN input or a bad alpha
+/// (every channel) and in a channel with a bad eta or k; capped at the largest finite value.
+/// Sources: as `ggx_conductor_rgb` (Cook and Torrance 1982; Walter et al. 2007; Heitz 2014;
+/// Born and Wolf, section 14.2), with Beckmann and Spizzichino 1963 for D (Walter et al.
+/// 2007, eq. 25) and Walter et al. 2007, eq. 27, for its Smith Lambda.
+///
+/// ```
+/// use brdf::{V3, cook_torrance};
+/// let (eta, k) = (V3::new(0.18, 0.42, 1.37), V3::new(3.42, 2.35, 1.77));
+/// let f = cook_torrance::beckmann_conductor_rgb(0.95, 0.8, 0.7, 0.9, 0.3, eta, k);
+/// assert!(f.x > f.z && f.z > 0.0);
+/// ```
+#[cfg(feature = "beckmann")]
+#[inline]
+#[must_use]
+pub fn beckmann_conductor_rgb<T: Real>(
+    n_dot_h: T,
+    n_dot_v: T,
+    n_dot_l: T,
+    v_dot_h: T,
+    alpha: T,
+    eta: V3<T>,
+    k: V3<T>,
+) -> V3<T> {
+    let f = fresnel::conductor_rgb(v_dot_h.saturate(), eta, k);
+    let dv = beckmann_dv(n_dot_h, n_dot_v, n_dot_l, alpha);
+    assemble_rgb(dv, n_dot_h, n_dot_v, n_dot_l, alpha, f)
+}
+
+/// `ggx_schlick_rgb` with the Beckmann D V of [`beckmann`]: per channel
+/// f_c = D(n.h) G2 (F0_c + (1 - F0_c)(1 - v.h)^5) / (4 n.l n.v), each channel equal to
+/// [`beckmann`] with `fresnel::schlick(f0.c, v_dot_h)` bit for bit. Domain, edges and
+/// sources as `ggx_schlick_rgb` and [`beckmann_conductor_rgb`].
+///
+/// ```
+/// use brdf::{V3, cook_torrance};
+/// let f = cook_torrance::beckmann_schlick_rgb(0.95, 0.8, 0.7, 0.9, 0.3, V3::splat(0.04));
+/// assert!(f.x > 0.0 && f.x == f.z);
+/// ```
+#[cfg(feature = "beckmann")]
+#[inline]
+#[must_use]
+pub fn beckmann_schlick_rgb<T: Real>(
+    n_dot_h: T,
+    n_dot_v: T,
+    n_dot_l: T,
+    v_dot_h: T,
+    alpha: T,
+    f0: V3<T>,
+) -> V3<T> {
+    let f = fresnel::schlick_rgb(f0, v_dot_h.saturate());
+    let dv = beckmann_dv(n_dot_h, n_dot_v, n_dot_l, alpha);
+    assemble_rgb(dv, n_dot_h, n_dot_v, n_dot_l, alpha, f)
+}
+
+/// `ggx_dielectric` with the Beckmann D V of [`beckmann`]:
+/// f = D(n.h) G2 F(v.h; eta) / (4 n.l n.v), equal to [`beckmann`] with
+/// `fresnel::dielectric(v_dot_h, eta)` bit for bit for v.h in [0, 1]. Domain, edges, the tint
+/// and sources as `ggx_dielectric` and [`beckmann_conductor_rgb`].
+///
+/// ```
+/// use brdf::cook_torrance;
+/// let f: f64 = cook_torrance::beckmann_dielectric(0.95, 0.8, 0.7, 0.9, 0.3, 1.5);
+/// assert!(f > 0.0 && f.is_finite());
+/// ```
+#[cfg(feature = "beckmann")]
+#[inline]
+#[must_use]
+pub fn beckmann_dielectric<T: Real>(
+    n_dot_h: T,
+    n_dot_v: T,
+    n_dot_l: T,
+    v_dot_h: T,
+    alpha: T,
+    eta: T,
+) -> T {
+    let f = fresnel::dielectric(v_dot_h.saturate(), eta);
+    let dv = beckmann_dv(n_dot_h, n_dot_v, n_dot_l, alpha);
+    assemble(dv, n_dot_h, n_dot_v, n_dot_l, alpha, f)
 }

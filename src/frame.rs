@@ -3,7 +3,22 @@
 //! In a local shading frame the normal is +z, so `cos(theta) = w.z`; the helpers below name
 //! these quantities (after pbrt-v4's `CosTheta`, `Tan2Theta`, `CosPhi`) so kernels never
 //! redo ad-hoc trigonometry. All of them are generic over [`Real`] and take [`V3`], so they
-//! serve `f32`, `f64` and lanes alike; `glam` vectors convert with `V3::from`.
+//! serve `f32`, `f64` and lanes alike; `glam` vectors convert with `V3::from` and back with
+//! `into()` (see [`crate::vec3`] for lanes).
+//!
+//! ```
+//! use brdf::V3;
+//! use brdf::frame::{self, Frame};
+//! use brdf::glam::Vec3;
+//!
+//! let n = Vec3::new(0.0, 0.6, 0.8);
+//! let f = Frame::from_normal(V3::from(n));
+//! let light = V3::from(Vec3::new(0.0, 0.0, 1.0));
+//! let local = f.to_local(light);
+//! assert!((frame::cos_theta(local) - 0.8).abs() < 1e-6);
+//! let back: Vec3 = f.to_world(local).into();
+//! assert!((back - Vec3::Z).length() < 1e-6);
+//! ```
 
 use crate::real::Real;
 use crate::vec3::V3;

@@ -6,6 +6,14 @@
 //! through Rough Surfaces" (EGSR); Heitz 2014, "Understanding the Masking-Shadowing Function in
 //! Microfacet-Based BRDFs" (JCGT 3(2)).
 //!
+//! Roughness: every `alpha` here is the GGX width alpha (Walter et al. 2007's alpha_g), not the
+//! perceptual roughness r of a material slider: alpha = r^2, converted by [`alpha_from_perceptual`]
+//! (glTF's `roughnessFactor`, Unreal Engine 4's `Roughness` and Filament's `perceptualRoughness`
+//! are r). Filament's shader functions take this alpha under the name `roughness`; those of
+//! Unreal Engine 4 take its square `a2`. The
+//! [roughness conventions](crate::microfacet#roughness-conventions) tabulate the names, and
+//! `cargo run --release --example shader_port` checks a port of both engines' formulas.
+//!
 //! Two entry points for every term: free functions of dot products (`d(n_dot_h, alpha)`), and
 //! the [`Ggx`] type implementing [`Microfacet`] on local-frame vectors (isotropic and
 //! anisotropic). Cosines passed to the free functions are clamped to [0, 1] (a cosine just
@@ -42,6 +50,8 @@
 //! two-product and Knuth's two-sum, about 150 extra flops), as are the separable G2's two G1
 //! (about 120 extra flops), and both are rounded once. Lambda divides by 2 cos last, so a
 //! subnormal cosine (exact as given) never meets a subnormal product.
+//!
+//! [`alpha_from_perceptual`]: crate::microfacet::alpha_from_perceptual
 
 use crate::domain::{above, any_nan3, nan_unless, nan_where};
 use crate::dw::Rel;
@@ -56,8 +66,10 @@ fn sin2_from_cos<T: Real>(c: T) -> T {
     (T::ONE - c) * (T::ONE + c)
 }
 
-/// The GGX (Trowbridge-Reitz) distribution with roughness alpha_x along the local x axis and
-/// alpha_y along y.
+/// The GGX (Trowbridge-Reitz) distribution with width alpha_x along the local x axis and alpha_y
+/// along y (alpha, not perceptual roughness: alpha = r^2, see [`alpha_from_perceptual`]).
+///
+/// [`alpha_from_perceptual`]: crate::microfacet::alpha_from_perceptual
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Ggx<T> {
     alpha_x: T,
@@ -65,9 +77,12 @@ pub struct Ggx<T> {
 }
 
 impl<T: Real> Ggx<T> {
-    /// An anisotropic GGX. Both alphas must be finite and >= 0 in every lane, else
-    /// [`ParamError`]; values below [`ALPHA_MIN`](crate::microfacet::ALPHA_MIN) (including 0)
-    /// are stored as given and clamped when evaluated.
+    /// An anisotropic GGX from the widths alpha_x, alpha_y (for a material's perceptual roughness
+    /// r, alpha = r^2: [`alpha_from_perceptual`]). Both alphas must be finite and >= 0 in every
+    /// lane, else [`ParamError`]; values below [`ALPHA_MIN`](crate::microfacet::ALPHA_MIN)
+    /// (including 0) are stored as given and clamped when evaluated.
+    ///
+    /// [`alpha_from_perceptual`]: crate::microfacet::alpha_from_perceptual
     pub fn new(alpha_x: T, alpha_y: T) -> Result<Self, ParamError> {
         validate_alphas(alpha_x, alpha_y)?;
         Ok(Self { alpha_x, alpha_y })
@@ -94,7 +109,9 @@ impl<T: Real> Ggx<T> {
         self.alpha_y
     }
 
-    /// An isotropic GGX, `alpha_x = alpha_y = alpha`; same validation as [`Ggx::new`].
+    /// An isotropic GGX, `alpha_x = alpha_y = alpha` (the width, not perceptual roughness:
+    /// `Ggx::isotropic(alpha_from_perceptual(r))` for a slider value r); same validation as
+    /// [`Ggx::new`].
     pub fn isotropic(alpha: T) -> Result<Self, ParamError> {
         Self::new(alpha, alpha)
     }
@@ -193,6 +210,12 @@ impl<T: Real> Microfacet<T> for Ggx<T> {
 /// (above 1 clamped to 1), alpha in [0, +inf) finite, clamped to [ALPHA_MIN, ALPHA_MAX]; NaN
 /// for NaN input, alpha < 0 or +inf. Correctly rounded to within 0.5 ULP (module docs): every
 /// rounding is recovered by error-free transformations and the result rounded once.
+///
+/// `alpha` is the GGX width, not perceptual roughness: alpha = r^2 for a material's roughness r
+/// ([`alpha_from_perceptual`]). Filament's `D_GGX(roughness, NoH)` takes this same alpha as
+/// `roughness`; Unreal Engine 4's `D_GGX(a2, NoH)` takes a2 = alpha^2.
+///
+/// [`alpha_from_perceptual`]: crate::microfacet::alpha_from_perceptual
 #[inline]
 #[must_use]
 pub fn d<T: Real>(n_dot_h: T, alpha: T) -> T {
@@ -208,8 +231,9 @@ pub fn d<T: Real>(n_dot_h: T, alpha: T) -> T {
 
 /// Anisotropic GGX NDF from the half vector's components in the shading frame:
 /// D = 1 / (pi ax ay ((t.h/ax)^2 + (b.h/ay)^2 + (n.h)^2)^2), 0 for n_dot_h <= 0 (Heitz 2014
-/// eq. 85; Burley 2012). `t_dot_h`, `b_dot_h`: the half vector against tangent and bitangent.
-/// Domain: components of a unit vector; alphas as [`d`]; NaN for NaN in any input.
+/// eq. 85; Burley 2012). `t_dot_h`, `b_dot_h`: the half vector against tangent and bitangent;
+/// `alpha_x`, `alpha_y`: the widths along them, each an alpha as in [`d`] (not perceptual
+/// roughness). Domain: components of a unit vector; alphas as [`d`]; NaN for NaN in any input.
 #[inline]
 #[must_use]
 pub fn d_aniso<T: Real>(n_dot_h: T, t_dot_h: T, b_dot_h: T, alpha_x: T, alpha_y: T) -> T {
@@ -220,8 +244,11 @@ pub fn d_aniso<T: Real>(n_dot_h: T, t_dot_h: T, b_dot_h: T, alpha_x: T, alpha_y:
 /// Lambda = (sqrt(1 + alpha^2 tan^2) - 1) / 2, evaluated without cancellation as
 /// q / (2 c (sqrt(c^2 + q) + c)), q = alpha^2 (1 - c)(1 + c) (Heitz 2014 eq. 86).
 /// |n_dot_v| is used (Lambda is symmetric) and clamped to 1; the pole at c = 0 is capped at
-/// the largest finite value. alpha as [`d`]; NaN for NaN input. Within 3.2 ULP (f32) / 2.9
-/// ULP (f64), subnormal cosines included (module docs).
+/// the largest finite value. alpha as [`d`] (the width, = perceptual roughness^2 via
+/// [`alpha_from_perceptual`]); NaN for NaN input. Within 3.2 ULP (f32) / 2.9 ULP (f64), subnormal
+/// cosines included (module docs).
+///
+/// [`alpha_from_perceptual`]: crate::microfacet::alpha_from_perceptual
 #[inline]
 #[must_use]
 pub fn lambda<T: Real>(n_dot_v: T, alpha: T) -> T {
@@ -241,9 +268,12 @@ fn lambda_of<T: Real>(c: T, q: T) -> T {
     (q / (c.mul_add(c, q).sqrt() + c) / (T::TWO * c)).min(T::MAX)
 }
 
-/// Smith masking G1 = 1 / (1 + Lambda) = 2c / (c + sqrt(c^2 + alpha^2 (1 - c^2))) of the
-/// isotropic GGX (Walter et al. 2007 eq. 34). 1 at c = 1, 0 at c = 0; uses |n_dot_v| clamped
-/// to 1; alpha as [`d`]; NaN for NaN input. Within 1.8 ULP (f32) / 2.1 ULP (f64).
+/// Smith masking G1 = 1 / (1 + Lambda) = 2c / (c + sqrt(c^2 + alpha^2 (1 - c^2))) of the isotropic
+/// GGX (Walter et al. 2007 eq. 34). 1 at c = 1, 0 at c = 0; uses |n_dot_v| clamped to 1; alpha as
+/// [`d`] (the width, = perceptual roughness^2 via [`alpha_from_perceptual`]); NaN for NaN input.
+/// Within 1.8 ULP (f32) / 2.1 ULP (f64).
+///
+/// [`alpha_from_perceptual`]: crate::microfacet::alpha_from_perceptual
 #[inline]
 #[must_use]
 pub fn g1<T: Real>(n_dot_v: T, alpha: T) -> T {
@@ -259,11 +289,17 @@ pub fn g1<T: Real>(n_dot_v: T, alpha: T) -> T {
 /// alpha^2 (1 - NoL^2))) (Heitz 2014 eq. 99 with eq. 86; the form of Lagarde and de Rousiers
 /// 2014, "Moving Frostbite to PBR", with the cancellation-free 1 - c^2).
 ///
+/// `alpha` is the width of [`d`], not perceptual roughness (alpha = r^2:
+/// [`alpha_from_perceptual`]). Filament's `V_SmithGGXCorrelated(roughness, NoV, NoL)` takes this
+/// alpha as `roughness`; Unreal Engine 4's `Vis_SmithJoint(a2, NoV, NoL)` takes a2 = alpha^2.
+///
 /// Cosines in [-1, 1], clamped to [0, 1]; alpha as [`d`]. Finite when either cosine is
 /// positive (at NoL = 0 it is 0.5 / (NoV alpha)); 0 when both are 0; capped at the largest
 /// finite value; NaN for NaN input. Within 2.5 ULP (f32) / 3.7 ULP (f64), cosines down to
 /// subnormals included: both outer cosines are scaled by a power of two first (module
 /// docs).
+///
+/// [`alpha_from_perceptual`]: crate::microfacet::alpha_from_perceptual
 #[inline]
 #[must_use]
 pub fn v_correlated<T: Real>(n_dot_v: T, n_dot_l: T, alpha: T) -> T {
@@ -305,7 +341,8 @@ fn guarded_half_over<T: Real>(den: T, n_dot_v: T, n_dot_l: T, param: T) -> T {
 /// GGX+Smith Microsurfaces", GDC). Approximation: max relative error 0.29 against
 /// [`v_correlated`] for alpha and cosines in [0.01, 1], worst at alpha = 0.01 with both
 /// cosines 0.01 (`cargo test --test smith_approximations -- --nocapture`). Cosines clamped to
-/// [0, 1]; 0 when both are 0; alpha as [`d`]; NaN for NaN input.
+/// [0, 1]; 0 when both are 0; alpha as [`d`] (the width r^2, not perceptual roughness); NaN
+/// for NaN input.
 #[inline]
 #[must_use]
 pub fn v_correlated_hammon<T: Real>(n_dot_v: T, n_dot_l: T, alpha: T) -> T {
@@ -320,8 +357,9 @@ pub fn v_correlated_hammon<T: Real>(n_dot_v: T, n_dot_l: T, alpha: T) -> T {
 /// alpha)) (Google Filament, "Physically Based Rendering in Filament", section 4.4.2.1,
 /// `V_SmithGGXCorrelated_Fast`). Expanded, its denominator is 2 NoL NoV (1 - alpha) +
 /// alpha (NoL + NoV): algebraically identical to [`v_correlated_hammon`] (same 0.29 maximum
-/// relative error), evaluated in a different order. Cosines clamped to [0, 1]; alpha as [`d`];
-/// NaN for NaN input.
+/// relative error), evaluated in a different order. Cosines clamped to [0, 1]; alpha as [`d`]
+/// (Filament's `roughness` argument: the width r^2, not perceptual roughness); NaN for NaN
+/// input.
 #[inline]
 #[must_use]
 pub fn v_correlated_fast<T: Real>(n_dot_v: T, n_dot_l: T, alpha: T) -> T {
@@ -336,8 +374,11 @@ pub fn v_correlated_fast<T: Real>(n_dot_v: T, n_dot_l: T, alpha: T) -> T {
 /// Inexpensive BRDF Model for Physically-based Rendering"; Karis 2013). Choose k with
 /// [`schlick_k_ibl`] or [`schlick_k_analytic`]. Domain k in (0, +inf) finite (k > 1, from
 /// alpha > 2, still gives G1 in [0, 1]); k <= 0, NaN or +inf gives NaN; cosine clamped to
-/// [0, 1]; 0 at c = 0, 1 at c = 1; NaN for NaN input. With k = alpha / 2 its max abs error against [`g1`] is 0.16
-/// (alpha = 0.01, NoV = 0.01; alpha and NoV in [0.01, 1]).
+/// [0, 1]; 0 at c = 0, 1 at c = 1; NaN for NaN input. With k = alpha / 2 its max abs error
+/// against [`g1`] is 0.16 (alpha = 0.01, NoV = 0.01; alpha and NoV in [0.01, 1]).
+///
+/// k is neither alpha nor perceptual roughness: [`schlick_k_ibl`] takes alpha (k = alpha / 2),
+/// [`schlick_k_analytic`] takes the perceptual roughness r (k = (r + 1)^2 / 8).
 #[inline]
 #[must_use]
 pub fn g1_schlick<T: Real>(n_dot_v: T, k: T) -> T {
@@ -353,19 +394,23 @@ fn k_ok<T: Real>(k: T) -> T::Mask {
     k.simd_gt(T::ZERO) & k.simd_lt(T::INFINITY)
 }
 
-/// k = alpha / 2: Schlick-GGX matched to Smith-GGX (Karis 2013, "Real Shading in Unreal
-/// Engine 4", used for image-based lighting). alpha as [`d`] (clamped, NaN outside its
-/// domain), so k is in [5e-5, 5e3].
+/// k = alpha / 2: Schlick-GGX matched to Smith-GGX (Karis 2013, "Real Shading in Unreal Engine 4",
+/// used for image-based lighting). alpha as [`d`] (clamped, NaN outside its domain), so k is in
+/// [5e-5, 5e3]. alpha is the width, not perceptual roughness: Karis's k = alpha / 2 has
+/// alpha = Roughness^2 of Unreal Engine 4's `Roughness` slider ([`alpha_from_perceptual`]).
+///
+/// [`alpha_from_perceptual`]: crate::microfacet::alpha_from_perceptual
 #[inline]
 #[must_use]
 pub fn schlick_k_ibl<T: Real>(alpha: T) -> T {
     clamp_alpha(alpha) * T::HALF
 }
 
-/// k = (r + 1)^2 / 8 from perceptual roughness r: Karis 2013's remapping for analytic lights
-/// ("Real Shading in Unreal Engine 4"; it reduces the hotness of rough surfaces at grazing
-/// angles, and is not an approximation of Smith-GGX). Domain r in [0, +inf) finite, clamped to
-/// sqrt(ALPHA_MAX) = 100; r < 0, NaN or +inf gives NaN.
+/// k = (r + 1)^2 / 8 from perceptual roughness r: Karis 2013's remapping for analytic lights ("Real
+/// Shading in Unreal Engine 4"; it reduces the hotness of rough surfaces at grazing angles, and is
+/// not an approximation of Smith-GGX). r is the perceptual roughness itself (Unreal Engine 4's
+/// `Roughness`, glTF's `roughnessFactor`), not alpha = r^2: unlike every other function here.
+/// Domain r in [0, +inf) finite, clamped to sqrt(ALPHA_MAX) = 100; r < 0, NaN or +inf gives NaN.
 #[inline]
 #[must_use]
 pub fn schlick_k_analytic<T: Real>(perceptual_roughness: T) -> T {
@@ -382,6 +427,7 @@ pub fn schlick_k_analytic<T: Real>(perceptual_roughness: T) -> T {
 /// divides by zero for k > 0. Cosines clamped to [0, 1]; k as [`g1_schlick`]; capped at the
 /// largest finite value; NaN for NaN input. With k = alpha / 2 it is up to 0.97
 /// below [`v_correlated`] (relative; alpha = 1, both cosines 0.01), like every separable G2.
+/// k from [`schlick_k_ibl`] (alpha) or [`schlick_k_analytic`] (perceptual roughness).
 #[inline]
 #[must_use]
 pub fn v_schlick<T: Real>(n_dot_v: T, n_dot_l: T, k: T) -> T {

@@ -8,7 +8,34 @@
 //! | [`smith_weak_furnace`] | integral G1(wo, m) D(m) max(0, wo.m) dm / cos(theta_o) | = 1 (Smith) |
 //! | [`reciprocity`] | max relative \|f(a, b) - f(b, a)\| over direction pairs | = 0 |
 //!
-//! All directions are unit vectors in the local shading frame (normal = +z), as `glam::DVec3`.
+//! All directions are unit vectors in the local shading frame (normal = +z). Each integrator
+//! comes in two forms computed by one implementation:
+//!
+//! | form | closure | directions |
+//! |---|---|---|
+//! | [`directional_albedo`], [`hemisphere`], ... | `f64` kernel | `glam::DVec3` |
+//! | [`directional_albedo_f32`], [`hemisphere_f32`], ... | `f32` kernel | `glam::Vec3` |
+//!
+//! The `_f32` form hands the kernel each direction rounded to `f32` and widens its result
+//! to `f64`; the integration itself (abscissae, weights, sums, error estimate) is the `f64`
+//! one, so an `f32` kernel's estimate differs from its `f64` twin's by the kernel's own
+//! rounding only (`tests/integrate_generic.rs`). A kernel written on [`V3`](crate::V3)
+//! converts each direction with `into()`:
+//!
+//! ```
+//! use brdf::integrate::{directional_albedo, directional_albedo_f32};
+//! use brdf::glam::{DVec3, Vec3};
+//! use brdf::{Real, V3};
+//!
+//! // A Lambertian lobe of albedo 0.5, written once over `V3<T>`.
+//! fn lambert<T: Real>(_wo: V3<T>, wi: V3<T>) -> T {
+//!     T::splat(0.5) * T::FRAC_1_PI * T::select(wi.z.simd_gt(T::ZERO), T::ONE, T::ZERO)
+//! }
+//! let a64 = directional_albedo(DVec3::Z, |wo, wi| lambert(wo.into(), wi.into()));
+//! let a32 = directional_albedo_f32(Vec3::Z, |wo, wi| lambert(wo.into(), wi.into()));
+//! assert!((a64.value - 0.5).abs() < 1e-6);
+//! assert!((a32.value - 0.5).abs() < 1e-6);
+//! ```
 //!
 //! # Method
 //! Globally adaptive cubature in spherical coordinates (theta in [0, pi/2], phi in [0, 2 pi],
@@ -44,7 +71,7 @@
 //! budget is spent, or when the array is full; the returned [`Estimate::error`] says how well
 //! it went in every case.
 
-use glam::DVec3;
+use glam::{DVec3, Vec3};
 
 /// Most rectangles an integration keeps at once (its stack use is `CAPACITY` x 56 bytes).
 pub const CAPACITY: usize = 4096;
@@ -355,6 +382,26 @@ pub fn hemisphere(mut f: impl FnMut(DVec3) -> f64, peaks: &[DVec3], cfg: &Config
     }
 }
 
+/// [`hemisphere`] for an `f32` integrand over `glam::Vec3`: `f` sees each direction rounded
+/// to `f32`, its result is widened to `f64`, and everything else is [`hemisphere`]'s.
+///
+/// ```
+/// use brdf::integrate::{hemisphere_f32, Config};
+/// use brdf::glam::Vec3;
+/// // Integral of cos(theta) over the hemisphere: pi.
+/// let e = hemisphere_f32(|w: Vec3| w.z, &[], &Config::default());
+/// assert!((e.value - core::f64::consts::PI).abs() < 1e-6);
+/// ```
+#[must_use]
+pub fn hemisphere_f32(mut f: impl FnMut(Vec3) -> f32, peaks: &[Vec3], cfg: &Config) -> Estimate {
+    let mut wide_peaks = [DVec3::ZERO; MAX_PEAKS];
+    let n = peaks.len().min(MAX_PEAKS);
+    for (w, p) in wide_peaks.iter_mut().zip(peaks) {
+        *w = p.as_dvec3();
+    }
+    hemisphere(|w| f64::from(f(w.as_vec3())), &wide_peaks[..n], cfg)
+}
+
 /// Mirror direction of a local-frame `wo` about the normal: `(-wo.x, -wo.y, wo.z)`.
 #[inline]
 fn mirror(wo: DVec3) -> DVec3 {
@@ -382,12 +429,53 @@ pub fn directional_albedo_with(
     hemisphere(|wi| f(wo, wi) * wi.z, &[mirror(wo)], cfg)
 }
 
+/// [`directional_albedo`] for an `f32` BRDF over `glam::Vec3` (see [`hemisphere_f32`]).
+///
+/// ```
+/// use brdf::integrate::directional_albedo_f32;
+/// use brdf::glam::Vec3;
+/// let rho = directional_albedo_f32(Vec3::Z, |_wo, _wi| 0.8 / core::f32::consts::PI);
+/// assert!((rho.value - 0.8).abs() < 1e-6);
+/// ```
+#[must_use]
+pub fn directional_albedo_f32(wo: Vec3, f: impl FnMut(Vec3, Vec3) -> f32) -> Estimate {
+    directional_albedo_with_f32(wo, f, &Config::default())
+}
+
+/// [`directional_albedo_with`] for an `f32` BRDF over `glam::Vec3` (see [`hemisphere_f32`]).
+#[must_use]
+pub fn directional_albedo_with_f32(
+    wo: Vec3,
+    mut f: impl FnMut(Vec3, Vec3) -> f32,
+    cfg: &Config,
+) -> Estimate {
+    directional_albedo_with(
+        wo.as_dvec3(),
+        |o, i| f64::from(f(o.as_vec3(), i.as_vec3())),
+        cfg,
+    )
+}
+
 /// Projected area of a microfacet distribution: integral of D(m) cos(theta_m) dm over the upper
 /// hemisphere, which is 1 for a normalized NDF (Torrance and Sparrow 1967; Walter et al. 2007,
 /// "Microfacet Models for Refraction through Rough Surfaces", eq. 4).
 #[must_use]
 pub fn ndf_projected_area(mut d: impl FnMut(DVec3) -> f64) -> Estimate {
     hemisphere(|m| d(m) * m.z, &[], &Config::default())
+}
+
+/// [`ndf_projected_area`] for an `f32` NDF over `glam::Vec3` (see [`hemisphere_f32`]).
+///
+/// ```
+/// use brdf::integrate::ndf_projected_area_f32;
+/// use brdf::glam::Vec3;
+/// // The cosine-lobe "NDF" D(m) = 1 / pi is normalized: integral of cos / pi = 1.
+/// let e = ndf_projected_area_f32(|_m| core::f32::consts::FRAC_1_PI);
+/// assert!((e.value - 1.0).abs() < 1e-6);
+/// ```
+#[must_use]
+pub fn ndf_projected_area_f32(mut d: impl FnMut(Vec3) -> f32) -> Estimate {
+    ndf_projected_area(|m| f64::from(d(m.as_vec3())))
 }
 
 /// Smith's weak white furnace: integral of G1(wo, m) D(m) max(0, wo.m) dm / cos(theta_o), which
@@ -432,6 +520,30 @@ pub fn smith_weak_furnace(
         error: KINK_SAFETY * e.error / wo.z,
         evaluations: e.evaluations,
     }
+}
+
+/// [`smith_weak_furnace`] for an `f32` NDF and masking function over `glam::Vec3` (see
+/// [`hemisphere_f32`]). `wo` is widened to `f64` for the integration, and `g1` receives it
+/// as given.
+///
+/// ```
+/// use brdf::integrate::smith_weak_furnace_f32;
+/// use brdf::glam::Vec3;
+/// // D = 1 / pi on the upper hemisphere with G1 = 1 at normal incidence: 1.
+/// let e = smith_weak_furnace_f32(Vec3::Z, |_m| core::f32::consts::FRAC_1_PI, |_wo, _m| 1.0);
+/// assert!((e.value - 1.0).abs() < 1e-5);
+/// ```
+#[must_use]
+pub fn smith_weak_furnace_f32(
+    wo: Vec3,
+    mut d: impl FnMut(Vec3) -> f32,
+    mut g1: impl FnMut(Vec3, Vec3) -> f32,
+) -> Estimate {
+    smith_weak_furnace(
+        wo.as_dvec3(),
+        |m| f64::from(d(m.as_vec3())),
+        |_, m| f64::from(g1(wo, m.as_vec3())),
+    )
 }
 
 /// Factor applied to the error estimate of integrands with a known kink (see
@@ -511,4 +623,20 @@ pub fn reciprocity(mut f: impl FnMut(DVec3, DVec3) -> f64) -> Reciprocity {
         }
     }
     out
+}
+
+/// [`reciprocity`] for an `f32` BRDF over `glam::Vec3`: `f` sees the same direction set
+/// rounded to `f32` (both orders of a pair see the same two vectors), and
+/// [`Reciprocity::worst`] reports the `f64` directions they were rounded from.
+///
+/// ```
+/// use brdf::integrate::reciprocity_f32;
+/// use brdf::glam::Vec3;
+/// // Phong-like, symmetric in its arguments: reciprocal to the last bit.
+/// let r = reciprocity_f32(|a: Vec3, b: Vec3| (a.z * b.z).max(0.0).powi(8));
+/// assert_eq!(r.max_rel, 0.0);
+/// ```
+#[must_use]
+pub fn reciprocity_f32(mut f: impl FnMut(Vec3, Vec3) -> f32) -> Reciprocity {
+    reciprocity(|a, b| f64::from(f(a.as_vec3(), b.as_vec3())))
 }

@@ -5,6 +5,36 @@
 //! cited and every property (normalization, reciprocity, energy) checked by numerical
 //! integration in the test suite.
 //!
+//! ## Tour
+//! ```
+//! # #[cfg(all(feature = "ggx", feature = "fresnel"))] {
+//! use brdf::glam::Vec3;
+//! use brdf::wide::f32x8;
+//! use brdf::{Real, fresnel, ggx, microfacet::alpha_from_perceptual};
+//!
+//! // A GGX specular lobe D V F, written once for every float type (Filament's shader form).
+//! fn specular<T: Real>(n_dot_h: T, n_dot_v: T, n_dot_l: T, v_dot_h: T, roughness: T) -> T {
+//!     let alpha = alpha_from_perceptual(roughness); // glTF's roughness is perceptual: alpha = r^2
+//!     let f = fresnel::schlick(T::splat(0.04), v_dot_h);
+//!     ggx::d(n_dot_h, alpha) * ggx::v_correlated(n_dot_v, n_dot_l, alpha) * f
+//! }
+//! // World-space glam vectors become the dot products the kernels take...
+//! let (n, v, l) = (Vec3::Z, Vec3::new(0.0, 0.6, 0.8), Vec3::new(0.6, 0.0, 0.8));
+//! let h = (v + l).normalize();
+//! let one = specular(n.dot(h), n.dot(v), n.dot(l), v.dot(h), 0.5_f32);
+//! // ...and eight pixels at a time run the same source on lanes, bit for bit.
+//! let x8 = |x: f32| f32x8::splat(x);
+//! let eight = specular(x8(n.dot(h)), x8(n.dot(v)), x8(n.dot(l)), x8(v.dot(h)), x8(0.5));
+//! assert_eq!(eight.to_array()[5], one);
+//! // Bad input surfaces instead of hiding: a NaN in gives a NaN out.
+//! assert!(specular(f32::NAN, 1.0, 1.0, 1.0, 0.5).is_nan());
+//! # }
+//! ```
+//! In generic code `T::splat(x)` (from [`Real`]) takes an `f64`; on a concrete `f32x8`,
+//! `f32x8::splat` is `wide`'s and takes an `f32`, and `f32x8::from_f64(x)` takes an `f64`
+//! (the [`real`] module's "two splats" table). [`V3`] carries directions and colours on any
+//! lane type and converts from and to glam's `Vec3`, `Vec3A` and `DVec3`.
+//!
 //! ## Modules
 //! | module | what it owns | feature |
 //! |---|---|---|
@@ -55,27 +85,6 @@
 //! bits, evaluating each paper's own definition) by the `brdf-oracle` workspace member; the
 //! measured table is `docs/accuracy.md` in the repository, and the report prints it.
 //!
-//! ## Tour
-//! ```
-//! use brdf::{Real, V3, frame::Frame};
-//! use brdf::wide::f32x8;
-//!
-//! // A kernel written once...
-//! fn lambert<T: Real>(albedo: T, n_dot_l: T) -> T {
-//!     albedo * T::FRAC_1_PI * n_dot_l.max(T::ZERO)
-//! }
-//! // ...runs on one value
-//! let one = lambert(0.5_f32, 1.0);
-//! // ...or on eight lanes at a time, bit-identical lane by lane.
-//! let eight = lambert(f32x8::splat(0.5), f32x8::splat(1.0));
-//! assert_eq!(eight.lane(3), one);
-//!
-//! // Shading frames work on the same generic vector type.
-//! let n = V3::new(0.0_f64, 0.6, 0.8);
-//! let f = Frame::from_normal(n);
-//! let local = f.to_local(n);
-//! assert!((local.z - 1.0).abs() < 1e-15);
-//! ```
 #![no_std]
 #![deny(missing_docs)]
 #![forbid(unsafe_code)]

@@ -57,6 +57,14 @@
 //! directions (`cargo test --test material_reciprocity`).
 //!
 //! ## Parameters
+//! `roughness` is the perceptual roughness r in [0, 1]: glTF's `roughnessFactor` (times the
+//! texture's green channel), Unreal Engine 4's material `Roughness`, Filament's
+//! `perceptualRoughness`. The GGX kernels take alpha = r^2 ([`alpha_from_perceptual`]), which
+//! is what Filament's shader functions call `roughness`: to feed this module from Filament's
+//! shading code, pass its perceptual value, not its `roughness`. (Filament also clamps r to
+//! at least 0.045 on desktop; this module floors alpha at
+//! [`ALPHA_MIN`](crate::microfacet::ALPHA_MIN) = 1e-4, r = 0.01.)
+//!
 //! [`MetallicRoughness`] validates its parameters once ([`ParamError`] names the one out of
 //! range) and evaluates from local-frame directions; the free functions [`metallic_roughness`]
 //! and [`gltf`] take dot products (the shader form) and validate nothing (out-of-range
@@ -262,7 +270,8 @@ fn any_nan<T: Real>(a: V3<T>, b: V3<T>) -> T::Mask {
 /// [`MetallicRoughness`] for KHR_materials_specular's coloured F0 and F90.
 ///
 /// Arguments: the cosines n.v, n.l, n.h and v.h of unit vectors; `base_color` with each
-/// channel in [0, 1]; `metallic` in [0, 1]; perceptual `roughness` in [0, 1];
+/// channel in [0, 1]; `metallic` in [0, 1]; perceptual `roughness` in [0, 1] (glTF's
+/// `roughnessFactor`, not alpha: alpha = roughness^2 is formed here);
 /// `dielectric_f0` in [0, 1] (0.04 = [`GLTF_DIELECTRIC_F0`] for glTF, [`f0_from_reflectance`]
 /// for Filament, [`fresnel::f0_from_ior`](crate::fresnel::f0_from_ior) from an IOR).
 ///
@@ -317,7 +326,9 @@ pub fn metallic_roughness<T: Real>(
 
 /// The glTF 2.0 metallic-roughness BRDF exactly as Appendix B composes it,
 /// `mix(dielectric_brdf, metal_brdf, metallic)` with F0 = 0.04 (IOR 1.5): [`metallic_roughness`]
-/// with [`GLTF_DIELECTRIC_F0`] and [`DiffuseCoupling::Gltf`]. Same domain and edges.
+/// with [`GLTF_DIELECTRIC_F0`] and [`DiffuseCoupling::Gltf`]. Same domain and edges;
+/// `roughness` is the material's `roughnessFactor` (perceptual, alpha = roughness^2 inside,
+/// [`alpha_from_perceptual`]).
 ///
 /// Source: The Khronos Group, "glTF 2.0 Specification", Appendix B "BRDF Implementation".
 #[inline]
@@ -380,7 +391,8 @@ pub struct MetallicRoughness<T> {
 
 impl<T: Real> MetallicRoughness<T> {
     /// A glTF 2.0 material: `base_color` with each channel in [0, 1] (linear RGB), `metallic`
-    /// in [0, 1], perceptual `roughness` in [0, 1] (alpha = roughness^2, floored at
+    /// in [0, 1], perceptual `roughness` in [0, 1] (glTF's `roughnessFactor`, Unreal Engine 4's
+    /// `Roughness`; alpha = roughness^2 by [`alpha_from_perceptual`], floored at
     /// [`ALPHA_MIN`](crate::microfacet::ALPHA_MIN)), dielectric F0 = 0.04 (IOR 1.5), no
     /// KHR_materials_specular adjustment, [`DiffuseCoupling::Gltf`]. A value outside its domain
     /// in any lane (NaN included) is a [`ParamError`] naming `base_color`, `metallic` or
@@ -486,15 +498,16 @@ impl<T: Real> MetallicRoughness<T> {
         self.metallic
     }
 
-    /// The perceptual roughness.
+    /// The perceptual roughness r, as given (alpha = r^2 is [`alpha`](Self::alpha)).
     #[inline]
     #[must_use]
     pub fn roughness(&self) -> T {
         self.roughness
     }
 
-    /// The GGX alpha the kernels use: roughness^2, floored at
-    /// [`ALPHA_MIN`](crate::microfacet::ALPHA_MIN).
+    /// The GGX alpha the kernels use: roughness^2 ([`alpha_from_perceptual`]), floored at
+    /// [`ALPHA_MIN`](crate::microfacet::ALPHA_MIN): the value to pass to [`ggx::d`] and
+    /// [`ggx::v_correlated`], and Filament's shader `roughness`.
     #[inline]
     #[must_use]
     pub fn alpha(&self) -> T {
@@ -606,9 +619,10 @@ impl<T: Real> MetallicRoughness<T> {
 
     /// The one-sample MIS pdf (solid angle) of [`sample`](Self::sample):
     /// pdf = P p_spec(wi) + (1 - P) p_diff(wi), with
-    /// P = [`specular_probability`](Self::specular_probability), p_spec = D_wo(h) / (4 wo.h) for h = normalize(wo + wi)
-    /// (GGX visible normals, [`sampling::visible_normal_pdf`] and [`sampling::reflect_pdf`])
-    /// and p_diff = max(0, wi.z) / pi.
+    /// P = [`specular_probability`](Self::specular_probability),
+    /// p_spec = D_wo(h) / (4 wo.h) for h = normalize(wo + wi) (GGX visible normals,
+    /// [`sampling::visible_normal_pdf`] and [`sampling::reflect_pdf`]) and
+    /// p_diff = max(0, wi.z) / pi.
     ///
     /// wi below the horizon: p_diff = 0 but p_spec is the density of the reflected visible
     /// normals there, so pdf integrates to 1 over the whole sphere and to
@@ -654,7 +668,7 @@ impl<T: Real> MetallicRoughness<T> {
         let u = T::select(specular, u_spec, u_diff);
         let (m, _) = sampling::ggx_vndf(&self.ggx(), wo, u, u2);
         let (wi_diff, _) = sampling::cosine_hemisphere(u, u2);
-        let wi = V3::select(specular, wo.reflect(m), wi_diff);
+        let wi = V3::select(specular, wo.mirror(m), wi_diff);
         // A diffuse wi does not depend on wo: a NaN view must still give a NaN direction.
         let bad = any_nan(wo, wo);
         let nan = T::splat(f64::NAN);

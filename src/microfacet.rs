@@ -2,16 +2,38 @@
 //! `TrowbridgeReitzDistribution`): D, Lambda, G1, the two G2 forms, the visibility V and the
 //! distribution of visible normals, all on local-frame vectors (normal = +z).
 //!
-//! Implemented by `ggx::Ggx` and `beckmann::Beckmann` (each behind its feature). The provided methods
-//! are written once here from `d`, `lambda` and `cos_lambda`, so both models share one
+//! Implemented by `ggx::Ggx` and `beckmann::Beckmann` (each behind its feature). The provided
+//! methods are written once here from `d`, `lambda` and `cos_lambda`, so both models share one
 //! height-correlated G2 and one guarded visibility.
+//!
+//! # Roughness conventions
+//! Every `alpha` parameter in this crate is the distribution's width alpha (Walter et al. 2007's
+//! alpha_g for GGX, the RMS slope for Beckmann), never the artist's perceptual roughness:
+//!
+//! | quantity | relation | names elsewhere |
+//! |---|---|---|
+//! | perceptual roughness r | the slider, in [0, 1] | glTF 2.0 `roughnessFactor`; Unreal Engine 4 material `Roughness`; Filament `perceptualRoughness`; Disney's `roughness` |
+//! | alpha | r^2 ([`alpha_from_perceptual`]) | this crate's `alpha`; Filament's shader argument `roughness` (`D_GGX`, `V_SmithGGXCorrelated`); pbrt-v4's `alpha_x`, `alpha_y` |
+//! | alpha^2 | r^4 | Unreal Engine 4's `a2` (`D_GGX(a2, NoH)`, `Vis_SmithJoint(a2, NoV, NoL)` in `BRDF.ush`); pbrt-v4's material `roughness` when `remaproughness` is on (its `RoughnessToAlpha` takes the square root) |
+//!
+//! So a shader's `roughness` may be either of the first two rows: Filament's shading code receives
+//! alpha (it squares the material's perceptual roughness beforehand), while others (LearnOpenGL's
+//! `DistributionGGX`, Unreal Engine 4 before its `a2` form) take the perceptual value and square it
+//! inside the function. Read the function body, not the argument's name. Convert a perceptual value
+//! with [`alpha_from_perceptual`] (and back with [`perceptual_from_alpha`]); pass alpha * alpha
+//! where an engine's formula wants `a2`. The mapping r -> r^2 is Burley 2012 ("Physically-Based
+//! Shading at Disney") and Karis 2013 ("Real Shading in Unreal Engine 4").
+//! `cargo run --release --example shader_port` ports Filament's and Unreal Engine 4's GGX to
+//! this crate and checks the conventions numerically.
 
 use crate::domain::{any_nan3, nan_unless, nan_where};
 use crate::error::{ParamError, require};
 use crate::real::Real;
 use crate::vec3::V3;
 
-/// The smallest alpha the kernels evaluate with; smaller (including 0) is clamped up to it.
+/// The smallest alpha the kernels evaluate with; smaller (including 0) is clamped up to it. As a
+/// perceptual roughness ([`alpha_from_perceptual`]): r = 0.01. Filament clamps higher, at r = 0.045
+/// (alpha 0.002025) on desktop and r = 0.089 on mobile: to reproduce its values, clamp r first.
 ///
 /// Why 1e-4: the GGX peak D = 1 / (pi alpha^2) is then 3.2e7 and Beckmann's 1 / (pi alpha^2)
 /// likewise, and D V F stays below 1e15, far inside f32's range (3.4e38);
@@ -20,7 +42,8 @@ use crate::vec3::V3;
 /// that of a mirror.
 pub const ALPHA_MIN: f64 = 1e-4;
 
-/// The largest alpha the kernels evaluate with; larger finite values are clamped down to it.
+/// The largest alpha the kernels evaluate with; larger finite values are clamped down to it. As a
+/// perceptual roughness ([`alpha_from_perceptual`]): r = 100.
 ///
 /// Why 1e4 (the mirror image of [`ALPHA_MIN`]): every intermediate of every kernel stays a
 /// normal f32 up to it. The GGX D of a unit normal m has the denominator
@@ -37,7 +60,10 @@ pub const ALPHA_MAX: f64 = 1e4;
 ///
 /// Directions are unit vectors in the local shading frame. Method names follow the terms of
 /// Heitz 2014, "Understanding the Masking-Shadowing Function in Microfacet-Based BRDFs"
-/// (JCGT 3(2)), whose equations the provided methods implement.
+/// (JCGT 3(2)), whose equations the provided methods implement. The roughness lives in the
+/// implementing type, given to its constructor as alpha, the width (not perceptual roughness:
+/// see the [roughness conventions](crate::microfacet#roughness-conventions) and
+/// [`alpha_from_perceptual`]).
 pub trait Microfacet<T: Real> {
     /// NDF D(m); 0 for m.z <= 0. Normalized: integral of D(m) m.z dm = 1. Domain: m a unit
     /// vector; NaN in any component gives NaN.
@@ -151,11 +177,25 @@ pub(crate) fn clamp_alpha<T: Real>(alpha: T) -> T {
     )
 }
 
-/// Perceptual roughness r to alpha = r^2, clamped to [[`ALPHA_MIN`], [`ALPHA_MAX`]] (so r
-/// below 0.01 gives ALPHA_MIN). The square makes a linear roughness slider perceptually even
-/// (Burley 2012, "Physically-Based Shading at Disney"; Karis 2013, "Real Shading in Unreal
-/// Engine 4"). Domain: r in [0, +inf) finite (r > 1 passes through squared, up to the
-/// clamp); r < 0, NaN or +inf gives NaN. Exact: one rounding of r^2.
+/// Perceptual roughness r to alpha = r^2, clamped to [[`ALPHA_MIN`], [`ALPHA_MAX`]] (so r below
+/// 0.01 gives ALPHA_MIN). The square makes a linear roughness slider perceptually even (Burley
+/// 2012, "Physically-Based Shading at Disney"; Karis 2013, "Real Shading in Unreal Engine 4").
+/// Domain: r in [0, +inf) finite (r > 1 passes through squared, up to the clamp); r < 0, NaN or
+/// +inf gives NaN. Exact: one rounding of r^2.
+///
+/// r is glTF's `roughnessFactor`, Unreal Engine 4's material `Roughness` and Filament's
+/// `perceptualRoughness`; the result is what every `alpha` parameter of the crate takes, and what
+/// Filament's shader functions call `roughness` (see the
+/// [roughness conventions](crate::microfacet#roughness-conventions)).
+///
+/// ```
+/// use brdf::microfacet::{ALPHA_MIN, alpha_from_perceptual, perceptual_from_alpha};
+/// let alpha = alpha_from_perceptual(0.5_f64); // a glTF roughnessFactor of 0.5
+/// assert_eq!(alpha, 0.25); // for ggx::d(n_dot_h, alpha), Filament's D_GGX(roughness, ..)
+/// assert_eq!(alpha * alpha, 0.0625); // for Unreal Engine 4's D_GGX(a2, NoH)
+/// assert_eq!(perceptual_from_alpha(alpha), 0.5);
+/// assert_eq!(alpha_from_perceptual(0.001_f64), ALPHA_MIN); // r below 0.01: the floor
+/// ```
 #[inline]
 #[must_use]
 pub fn alpha_from_perceptual<T: Real>(roughness: T) -> T {
@@ -165,9 +205,10 @@ pub fn alpha_from_perceptual<T: Real>(roughness: T) -> T {
     nan_unless(alpha_ok(roughness), clamp_alpha(r * r))
 }
 
-/// alpha to perceptual roughness r = sqrt(alpha) (the inverse of [`alpha_from_perceptual`]
-/// between the clamps). Domain alpha in [0, +inf); alpha < 0 or NaN gives NaN, +inf gives
-/// +inf. Correctly rounded (one square root).
+/// alpha to perceptual roughness r = sqrt(alpha) (the inverse of [`alpha_from_perceptual`] between
+/// the clamps): the value a glTF `roughnessFactor` or a UE4 `Roughness` slider holds for a given
+/// alpha. Domain alpha in [0, +inf); alpha < 0 or NaN gives NaN, +inf gives +inf. Correctly rounded
+/// (one square root).
 #[inline]
 #[must_use]
 pub fn perceptual_from_alpha<T: Real>(alpha: T) -> T {

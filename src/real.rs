@@ -1,9 +1,48 @@
 //! The float/lane abstraction every kernel is written against.
 //!
-//! [`Real`] is implemented for `f32`, `f64`, [`wide::f32x8`] and [`wide::f64x4`]. A kernel
-//! written once as `fn d<T: Real>(n_dot_h: T, alpha: T) -> T` runs on one value or on eight
-//! lanes at a time. Branches on lane values become [`Real::select`] on a [`Mask`]
-//! (`bool` for scalars, an all-ones/all-zeros lane mask for SIMD types).
+//! [`Real`] is implemented for `f32`, `f64`, [`f32x8`] and [`f64x4`] (eight `f32` and four
+//! `f64` lanes, from the [`wide`] crate, re-exported as `brdf::wide`). A kernel written once
+//! as `fn d<T: Real>(n_dot_h: T, alpha: T) -> T` runs on one value or on eight lanes at a
+//! time. Branches on lane values become [`Real::select`] on a [`Mask`] (`bool` for scalars,
+//! an all-ones/all-zeros lane mask for SIMD types).
+//!
+//! [`f32x8`]: https://docs.rs/wide/1/wide/struct.f32x8.html
+//! [`f64x4`]: https://docs.rs/wide/1/wide/struct.f64x4.html
+//! [`wide`]: https://docs.rs/wide/1/wide/
+//!
+//! # Making lane values: wide's methods and two `splat`s
+//! Three of `wide`'s own methods are all a user of this crate needs from it:
+//! - `f32x8::new([f32; 8])` / `f64x4::new([f64; 4])`: one value per lane;
+//! - `f32x8::splat(x: f32)` / `f64x4::splat(x: f64)`: `x` in every lane, `x` of the lane
+//!   type;
+//! - `v.to_array()`: the lanes back as an array (or [`Real::lane`] for one of them).
+//!
+//! `Real` has a `splat` of its own, [`Real::splat`]`(x: f64)`, which takes an `f64` on every
+//! implementing type and rounds it to the lane type, so that generic code can write literals
+//! and constants once. The two share a name, and on a concrete lane type `f32x8::splat(x)`
+//! resolves to `wide`'s (inherent methods win over trait methods), which takes an `f32`:
+//!
+//! | you write | in | meaning |
+//! |---|---|---|
+//! | `T::splat(0.5)` | generic code, `T: Real` | [`Real::splat`]: `0.5_f64` rounded to `T`'s lanes |
+//! | `f32x8::splat(0.5)` | concrete code | `wide`'s: `0.5_f32` in every lane |
+//! | `f32x8::from_f64(alpha)` | concrete code, `alpha: f64` | [`Real::from_f64`]: the same as `Real::splat` under a name `wide` does not use |
+//! | `T::from_scalar(x)` | generic code, `x: T::Scalar` | [`Real::from_scalar`]: `x` in every lane, no rounding |
+//!
+//! ```
+//! use brdf::Real;
+//! use brdf::wide::f32x8;
+//!
+//! fn half<T: Real>() -> T {
+//!     T::splat(0.5) // Real::splat: takes f64 on every T
+//! }
+//! let alpha: f64 = 0.25;
+//! let a = f32x8::from_f64(alpha); // f64 into f32 lanes (Real)
+//! let b = f32x8::splat(0.25); // f32 literal (wide)
+//! assert_eq!(a, b);
+//! assert_eq!(half::<f32x8>(), f32x8::splat(0.5));
+//! assert_eq!(f32x8::new([1.0; 8]).to_array(), [1.0; 8]);
+//! ```
 //!
 //! # Semantics shared by every implementation
 //! - `min`/`max`: `a.max(b)` is `b` where `a < b` and `a` otherwise, so a NaN in `self`
@@ -118,17 +157,17 @@ pub trait Real:
 
     /// Number of lanes (1 for scalars).
     const LANES: usize;
-    /// 0.
+    /// The value zero, `0`, in every lane.
     const ZERO: Self;
-    /// 1.
+    /// The value one, `1`, in every lane.
     const ONE: Self;
-    /// 1/2.
+    /// The value one half, `1/2`, in every lane.
     const HALF: Self;
-    /// 2.
+    /// The value two, `2`, in every lane.
     const TWO: Self;
-    /// pi.
+    /// The value pi in every lane, rounded to the lane type.
     const PI: Self;
-    /// 1/pi.
+    /// The value `1/pi` in every lane, rounded to the lane type.
     const FRAC_1_PI: Self;
     /// Machine epsilon of the lane type (2^-23 for f32, 2^-52 for f64).
     const EPSILON: Self;
@@ -139,9 +178,22 @@ pub trait Real:
     /// Positive infinity.
     const INFINITY: Self;
 
-    /// Every lane set to `v`, rounded to the lane type (use for literals and constants).
+    /// Every lane set to `v`, rounded to the lane type: the way to write a literal or a
+    /// constant once in generic code (`T::splat(0.5)`).
+    ///
+    /// Takes an `f64` on every type. On a concrete `f32x8` or `f64x4`, `f32x8::splat(x)`
+    /// names `wide`'s inherent `splat`, which takes the lane type (`f32`) instead; there,
+    /// write [`Real::from_f64`] for an `f64` (see the [module docs](self)).
     fn splat(v: f64) -> Self;
-    /// Every lane set to `v`.
+    /// Every lane set to `v`, rounded to the lane type: [`Real::splat`] under a name that
+    /// `wide`'s SIMD types do not shadow, so `f32x8::from_f64(alpha)` needs no
+    /// `<f32x8 as Real>::` qualification.
+    #[inline]
+    #[must_use]
+    fn from_f64(v: f64) -> Self {
+        Self::splat(v)
+    }
+    /// Every lane set to `v`, exactly (no rounding: `v` is already of the lane type).
     fn from_scalar(v: Self::Scalar) -> Self;
     /// Builds a value lane by lane: lane `i` is `f(i)`.
     fn from_fn(f: impl FnMut(usize) -> Self::Scalar) -> Self;

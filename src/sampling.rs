@@ -15,6 +15,12 @@
 //!
 //! The pdf of the reflected direction wi = reflect(wo, m) is pdf_m / (4 |wo.m|) ([`reflect_pdf`];
 //! Walter et al. 2007, eq. 14).
+//!
+//! The Cook-Torrance reflection lobe in one call: `ggx_reflection` and `beckmann_reflection`
+//! (and their `_rgb` forms, each behind its model's feature) draw a visible normal, reflect
+//! wo about it and return (wi, pdf, weight) with weight = f cos / pdf = F G2 / G1 for a
+//! Fresnel closure of the caller's; `ggx_reflection_pdf` and `beckmann_reflection_pdf` give
+//! the same pdf for any (wo, wi), for multiple importance sampling.
 
 use crate::domain::{any_nan3, nan_where};
 use crate::real::Real;
@@ -321,4 +327,218 @@ pub fn beckmann_vndf<T: Real>(beckmann: &Beckmann<T>, wo: V3<T>, u1: T, u2: T) -
     let m = normal_from_slope(rx, ry, ax, ay);
     let bad = any_nan3(wo) | u1.is_nan() | u2.is_nan() | ax.is_nan() | ay.is_nan();
     nan_sample(bad, m, visible_normal_pdf(beckmann, wo, m))
+}
+
+/// Mirror reflection of `wo` about the unit microfacet normal `m`: wi = 2 (wo.m) m - wo (both
+/// pointing away from the surface).
+#[cfg(any(feature = "ggx", feature = "beckmann"))]
+#[inline]
+fn reflect_about<T: Real>(wo: V3<T>, m: V3<T>) -> V3<T> {
+    m * (T::TWO * wo.dot(m)) - wo
+}
+
+/// pdf (solid angle) of a direction reflected off a visible normal: D_wo(h) / (4 wo.h) with
+/// h = normalize(wo + wi), written G1(wo) D(h) / (4 wo.z) (wo.h cancels), and G1(wo) / wo.z
+/// as 1 / (wo.z + wo.z Lambda(wo)) so that it stays finite at the horizon.
+#[cfg(any(feature = "ggx", feature = "beckmann"))]
+#[inline]
+fn vndf_reflection_pdf<T: Real, M: Microfacet<T> + ?Sized>(dist: &M, wo: V3<T>, wi: V3<T>) -> T {
+    let h = (wo + wi).normalize_or(V3::unit_z());
+    let c = wo.z;
+    let inv = (T::splat(4.0) * (c + dist.cos_lambda(wo)))
+        .recip()
+        .min(T::MAX);
+    // wo.h = |wo + wi| / 2 >= 0 analytically; 0 only for wi = -wo, where h is undefined.
+    let visible = c.simd_gt(T::ZERO) & wo.dot(h).simd_gt(T::ZERO);
+    let p = T::select(visible, (inv * dist.d(h)).min(T::MAX), T::ZERO);
+    nan_where(any_nan3(wo) | any_nan3(wi), p)
+}
+
+/// The sample of a reflection sampler without its Fresnel factor: (wi, pdf, G2 / G1(wo),
+/// wo.m), with G2 / G1 = (1 + Lambda(wo)) / (1 + Lambda(wo) + Lambda(wi)) masked to 0 where
+/// wo or wi is at or below the horizon (NaN for NaN).
+#[cfg(any(feature = "ggx", feature = "beckmann"))]
+#[inline]
+fn reflection_parts<T: Real, M: Microfacet<T> + ?Sized>(
+    dist: &M,
+    wo: V3<T>,
+    m: V3<T>,
+) -> (V3<T>, T, T, T) {
+    let wi = reflect_about(wo, m);
+    let pdf = vndf_reflection_pdf(dist, wo, wi);
+    // Each Lambda is capped at MAX; a sum overflowing to inf gives the right limit 0.
+    let lo = T::ONE + dist.lambda(wo);
+    let ratio = lo / (lo + dist.lambda(wi));
+    let ratio = crate::domain::above_horizon(wo.z, wi.z, ratio);
+    (wi, pdf, ratio, wo.dot(m).saturate())
+}
+
+/// The weight F G2 / G1 of one channel: NaN where F is NaN or negative, capped at MAX.
+#[cfg(any(feature = "ggx", feature = "beckmann"))]
+#[inline]
+fn weigh<T: Real>(ratio: T, f: T) -> T {
+    crate::domain::nan_unless(f.simd_ge(T::ZERO), (ratio * f).min(T::MAX))
+}
+
+/// Samples the Cook-Torrance reflection lobe of a GGX surface and returns (wi, pdf, weight):
+/// a visible normal m ([`ggx_vndf_spherical_cap`]; Heitz 2018, "Sampling the GGX
+/// Distribution of Visible Normals"; Dupuy and Benyoub 2023), wi = 2 (wo.m) m - wo, its pdf
+/// [`ggx_reflection_pdf`]`(ggx, wo, wi)` (the same value, bit for bit), and the Monte Carlo
+/// weight f(wo, wi) wi.z / pdf of the lobe f = D G2 F / (4 wo.z wi.z) (`cook_torrance::eval`
+/// with the height-correlated G2).
+///
+/// With visible-normal sampling the pdf is G1(wo) D(m) / (4 wo.z), so D and the cosines
+/// cancel and the weight is F(wo.m) G2(wo, wi) / G1(wo) = F (1 + Lambda(wo)) / (1 +
+/// Lambda(wo) + Lambda(wi)) (Heitz 2018; Heitz and d'Eon 2014): in [0, F], with no
+/// division by a small pdf, which is why it is computed in this form and not as f cos / pdf.
+/// `fresnel` is called once with wo.m (= wi.m, clamped to [0, 1]); any Fresnel form of
+/// `brdf::fresnel` (scalar), or a constant; it must return F >= 0.
+///
+/// Edges: a wi reflected below the horizon (a grazing view and a steep visible normal) is
+/// returned as drawn with its pdf > 0 and weight 0 (the lobe is reflection only; pbrt-v4
+/// returns no sample there, the same estimator). wo at or below the horizon (finite): the
+/// lobe is 0, so pdf 0 and weight 0, wi still a unit vector. u outside [0, 1) is clamped
+/// into it. NaN in a component of wo, in u1 or u2 gives a NaN wi (all three components), pdf
+/// and weight; a NaN or negative F gives a NaN weight.
+///
+/// ```
+/// use brdf::{V3, ggx::Ggx, sampling};
+/// let ggx = Ggx::isotropic(0.3).unwrap();
+/// let wo = V3::new(0.6, 0.0, 0.8);
+/// let (wi, pdf, weight) = sampling::ggx_reflection(&ggx, wo, 0.4, 0.7, |_| 1.0);
+/// assert!(wi.z > 0.0 && pdf > 0.0 && weight > 0.0 && weight <= 1.0);
+/// assert_eq!(pdf, sampling::ggx_reflection_pdf(&ggx, wo, wi));
+/// ```
+#[cfg(feature = "ggx")]
+#[inline]
+#[must_use]
+pub fn ggx_reflection<T: Real>(
+    ggx: &Ggx<T>,
+    wo: V3<T>,
+    u1: T,
+    u2: T,
+    fresnel: impl Fn(T) -> T,
+) -> (V3<T>, T, T) {
+    let (m, _) = ggx_vndf_spherical_cap(ggx, wo, u1, u2);
+    let (wi, pdf, ratio, v_dot_h) = reflection_parts(ggx, wo, m);
+    (wi, pdf, weigh(ratio, fresnel(v_dot_h)))
+}
+
+/// [`ggx_reflection`] with an RGB Fresnel term (for example `fresnel::schlick_rgb` or
+/// `fresnel::conductor_rgb`): the weight is F_c G2 / G1(wo) per channel (x = r, y = g,
+/// z = b), each channel NaN where its F is NaN or negative; wi and pdf as [`ggx_reflection`].
+///
+/// ```
+/// use brdf::{V3, ggx::Ggx, sampling};
+/// let ggx = Ggx::isotropic(0.3).unwrap();
+/// let tint = V3::new(1.0, 0.8, 0.3);
+/// let (_, _, w) = sampling::ggx_reflection_rgb(&ggx, V3::new(0.0, 0.0, 1.0), 0.2, 0.5, |_| tint);
+/// assert!(w.x >= w.y && w.y >= w.z && w.z > 0.0);
+/// ```
+#[cfg(feature = "ggx")]
+#[inline]
+#[must_use]
+pub fn ggx_reflection_rgb<T: Real>(
+    ggx: &Ggx<T>,
+    wo: V3<T>,
+    u1: T,
+    u2: T,
+    fresnel: impl Fn(T) -> V3<T>,
+) -> (V3<T>, T, V3<T>) {
+    let (m, _) = ggx_vndf_spherical_cap(ggx, wo, u1, u2);
+    let (wi, pdf, ratio, v_dot_h) = reflection_parts(ggx, wo, m);
+    let f = fresnel(v_dot_h);
+    let w = V3::new(weigh(ratio, f.x), weigh(ratio, f.y), weigh(ratio, f.z));
+    (wi, pdf, w)
+}
+
+/// pdf (solid angle) of [`ggx_reflection`] and [`ggx_reflection_rgb`], for multiple
+/// importance sampling: with h = normalize(wo + wi),
+/// pdf = D_wo(h) / (4 wo.h) = G1(wo) D(h) / (4 wo.z)
+/// (the visible-normal density, [`visible_normal_pdf`], times the reflection Jacobian
+/// 1 / (4 wo.h) of [`reflect_pdf`]; Walter et al. 2007, eq. 14; Heitz 2018, eq. 17), evaluated
+/// in the second form, in which wo.h has cancelled.
+///
+/// Domain: unit local-frame vectors. Integrates to 1 over the whole sphere of wi for every
+/// wo above the horizon; where wi is below the horizon it is the density of the samples
+/// reflected there (> 0), for which the weight is 0. 0 where wo.z <= 0 (the lobe is
+/// reflection only and the sampler returns pdf 0 there) and where wi = -wo. Capped at the
+/// largest finite value. NaN for NaN in any component of wo or wi.
+#[cfg(feature = "ggx")]
+#[inline]
+#[must_use]
+pub fn ggx_reflection_pdf<T: Real>(ggx: &Ggx<T>, wo: V3<T>, wi: V3<T>) -> T {
+    vndf_reflection_pdf(ggx, wo, wi)
+}
+
+/// `ggx_reflection` for a Beckmann surface: a visible normal m from [`beckmann_vndf`]
+/// (Heitz and d'Eon 2014, "Importance Sampling Microfacet-Based BSDFs using the Distribution
+/// of Visible Normals"), wi = 2 (wo.m) m - wo, pdf [`beckmann_reflection_pdf`]`(beckmann, wo,
+/// wi)` and weight F(wo.m) G2 / G1(wo), the same simplification of f wi.z / pdf as for GGX
+/// (it holds for every distribution sampled by its visible normals). Edges, NaN and the
+/// Fresnel closure as `ggx_reflection`:
+/// a wi below the horizon keeps its pdf > 0 with weight 0; wo at or below the horizon gives
+/// pdf 0 and weight 0; NaN in wo, u1 or u2 gives NaN wi, pdf and weight; a NaN or negative F a
+/// NaN weight.
+///
+/// ```
+/// use brdf::{V3, beckmann::Beckmann, sampling};
+/// let b = Beckmann::isotropic(0.3).unwrap();
+/// let wo = V3::new(0.6, 0.0, 0.8);
+/// let (wi, pdf, weight) = sampling::beckmann_reflection(&b, wo, 0.4, 0.7, |_| 1.0);
+/// assert!(wi.z > 0.0 && pdf > 0.0 && weight > 0.0 && weight <= 1.0);
+/// ```
+#[cfg(feature = "beckmann")]
+#[inline]
+#[must_use]
+pub fn beckmann_reflection<T: Real>(
+    beckmann: &Beckmann<T>,
+    wo: V3<T>,
+    u1: T,
+    u2: T,
+    fresnel: impl Fn(T) -> T,
+) -> (V3<T>, T, T) {
+    let (m, _) = beckmann_vndf(beckmann, wo, u1, u2);
+    let (wi, pdf, ratio, v_dot_h) = reflection_parts(beckmann, wo, m);
+    (wi, pdf, weigh(ratio, fresnel(v_dot_h)))
+}
+
+/// [`beckmann_reflection`] with an RGB Fresnel term: the weight is F_c G2 / G1(wo) per
+/// channel, each NaN where its F is NaN or negative; wi and pdf as [`beckmann_reflection`].
+///
+/// ```
+/// use brdf::{V3, beckmann::Beckmann, sampling};
+/// let b = Beckmann::isotropic(0.3).unwrap();
+/// let (_, _, w) = sampling::beckmann_reflection_rgb(&b, V3::new(0.0, 0.0, 1.0), 0.2, 0.5, |_| {
+///     V3::new(1.0, 0.8, 0.3)
+/// });
+/// assert!(w.x >= w.y && w.y >= w.z && w.z > 0.0);
+/// ```
+#[cfg(feature = "beckmann")]
+#[inline]
+#[must_use]
+pub fn beckmann_reflection_rgb<T: Real>(
+    beckmann: &Beckmann<T>,
+    wo: V3<T>,
+    u1: T,
+    u2: T,
+    fresnel: impl Fn(T) -> V3<T>,
+) -> (V3<T>, T, V3<T>) {
+    let (m, _) = beckmann_vndf(beckmann, wo, u1, u2);
+    let (wi, pdf, ratio, v_dot_h) = reflection_parts(beckmann, wo, m);
+    let f = fresnel(v_dot_h);
+    let w = V3::new(weigh(ratio, f.x), weigh(ratio, f.y), weigh(ratio, f.z));
+    (wi, pdf, w)
+}
+
+/// pdf (solid angle) of [`beckmann_reflection`] and [`beckmann_reflection_rgb`]:
+/// G1(wo) D(h) / (4 wo.z) with h = normalize(wo + wi); form, domain and edges as
+/// `ggx_reflection_pdf`: integrates to 1 over the sphere of wi for wo above the horizon, > 0
+/// below the horizon (where the weight is 0), 0 where wo.z <= 0 or wi = -wo, capped at the
+/// largest finite value, NaN for NaN in any component.
+#[cfg(feature = "beckmann")]
+#[inline]
+#[must_use]
+pub fn beckmann_reflection_pdf<T: Real>(beckmann: &Beckmann<T>, wo: V3<T>, wi: V3<T>) -> T {
+    vndf_reflection_pdf(beckmann, wo, wi)
 }

@@ -443,7 +443,8 @@ impl UchimuraParams {
     };
 
     /// True when every field is finite, P, a, m and c are > 0, l >= 0, and the linear
-    /// section ends below P (S1 = m + a l0 < P, else the shoulder divides by P - S1 <= 0).
+    /// section ends below P (S1 = m + a l0 < P with l0 = (P - m) l / a, else the shoulder
+    /// divides by P - S1 <= 0; the names are those of Uchimura 2017).
     fn is_valid(&self) -> bool {
         let all_finite = [
             self.max_brightness,
@@ -469,8 +470,10 @@ impl UchimuraParams {
 /// Uchimura's "GT" curve (Uchimura 2017, "HDR Theory and Practice", CEDEC): a power toe
 /// m (x/m)^c + b, a linear section m + a (x - m), and an exponential shoulder
 /// P - (P - S1) exp(-a P / (P - S1) (x - S0) / P), blended by smoothstep(0, m, x) and a step at
-/// S0 = m + l0. Per channel, clamped to [0, 1]. f(0) = b. Parameters: every field finite,
-/// P, a, m, c > 0, l >= 0 and m + a l0 < P (the Gran Turismo values qualify); others give NaN.
+/// S0 = m + l0, where l0 = (P - m) l / a is the linear section's length in x and
+/// S1 = m + a l0 its end value (the talk's notation). Per channel, clamped to [0, 1].
+/// f(0) = b. Parameters: every field finite, P, a, m, c > 0, l >= 0 and m + a l0 < P (the Gran
+/// Turismo values qualify); others give NaN.
 #[inline]
 #[must_use]
 pub fn uchimura<T: Real>(c: T, p: &UchimuraParams) -> T {

@@ -286,8 +286,14 @@ fn frame_rows<T: Real>(t: &mut Vec<Kernel<T>>) {
     t.push(k("V3::normalize_or", vec![v("a", [0.3, -1.2, 2.0])], |x| {
         o3(v3(x, 0).normalize_or(V3::unit_z()))
     }));
-    t.push(k("V3::reflect", vec![v("a", WO), v("n", M)], |x| {
-        o3(v3(x, 0).reflect(v3(x, 3)))
+    t.push(k("V3::mirror", vec![v("a", WO), v("n", M)], |x| {
+        o3(v3(x, 0).mirror(v3(x, 3)))
+    }));
+    t.push(k("V3::min_element", vec![v("a", WO)], |x| {
+        vec![v3(x, 0).min_element()]
+    }));
+    t.push(k("V3::max_element", vec![v("a", WO)], |x| {
+        vec![v3(x, 0).max_element()]
     }));
 }
 
@@ -649,6 +655,66 @@ fn cook_torrance_rows<T: Real>(t: &mut Vec<Kernel<T>>) {
             ],
             |x| vec![ct::ggx(x[0], x[1], x[2], x[3], x[4])],
         ));
+        t.push(
+            k(
+                "cook_torrance::ggx_conductor_rgb",
+                vec![
+                    c("n_dot_h", NH),
+                    c("n_dot_v", NV),
+                    c("n_dot_l", NL),
+                    c("v_dot_h", VH),
+                    p("alpha", 0.3, &ALPHA_BAD),
+                    rgb("eta", [0.18, 0.42, 1.37], &ETA_BAD),
+                    rgb("k", [3.42, 2.35, 1.77], &NONNEG_BAD),
+                ],
+                |x| {
+                    o3(ct::ggx_conductor_rgb(
+                        x[0],
+                        x[1],
+                        x[2],
+                        x[3],
+                        x[4],
+                        v3(x, 5),
+                        v3(x, 8),
+                    ))
+                },
+            )
+            .dep("eta.x", &[0])
+            .dep("eta.y", &[1])
+            .dep("eta.z", &[2])
+            .dep("k.x", &[0])
+            .dep("k.y", &[1])
+            .dep("k.z", &[2]),
+        );
+        t.push(
+            k(
+                "cook_torrance::ggx_schlick_rgb",
+                vec![
+                    c("n_dot_h", NH),
+                    c("n_dot_v", NV),
+                    c("n_dot_l", NL),
+                    c("v_dot_h", VH),
+                    p("alpha", 0.3, &ALPHA_BAD),
+                    rgb("f0", [0.9, 0.6, 0.3], &UNIT_BAD),
+                ],
+                |x| o3(ct::ggx_schlick_rgb(x[0], x[1], x[2], x[3], x[4], v3(x, 5))),
+            )
+            .dep("f0.x", &[0])
+            .dep("f0.y", &[1])
+            .dep("f0.z", &[2]),
+        );
+        t.push(k(
+            "cook_torrance::ggx_dielectric",
+            vec![
+                c("n_dot_h", NH),
+                c("n_dot_v", NV),
+                c("n_dot_l", NL),
+                c("v_dot_h", VH),
+                p("alpha", 0.3, &ALPHA_BAD),
+                p("eta", 1.5, &ETA_BAD),
+            ],
+            |x| vec![ct::ggx_dielectric(x[0], x[1], x[2], x[3], x[4], x[5])],
+        ));
     }
     #[cfg(feature = "beckmann")]
     t.push(k(
@@ -663,6 +729,78 @@ fn cook_torrance_rows<T: Real>(t: &mut Vec<Kernel<T>>) {
         ],
         |x| vec![ct::beckmann(x[0], x[1], x[2], x[3], x[4])],
     ));
+    #[cfg(feature = "beckmann")]
+    {
+        t.push(
+            k(
+                "cook_torrance::beckmann_conductor_rgb",
+                vec![
+                    c("n_dot_h", NH),
+                    c("n_dot_v", NV),
+                    c("n_dot_l", NL),
+                    c("v_dot_h", VH),
+                    p("alpha", 0.3, &ALPHA_BAD),
+                    rgb("eta", [0.18, 0.42, 1.37], &ETA_BAD),
+                    rgb("k", [3.42, 2.35, 1.77], &NONNEG_BAD),
+                ],
+                |x| {
+                    o3(ct::beckmann_conductor_rgb(
+                        x[0],
+                        x[1],
+                        x[2],
+                        x[3],
+                        x[4],
+                        v3(x, 5),
+                        v3(x, 8),
+                    ))
+                },
+            )
+            .dep("eta.x", &[0])
+            .dep("eta.y", &[1])
+            .dep("eta.z", &[2])
+            .dep("k.x", &[0])
+            .dep("k.y", &[1])
+            .dep("k.z", &[2]),
+        );
+        t.push(
+            k(
+                "cook_torrance::beckmann_schlick_rgb",
+                vec![
+                    c("n_dot_h", NH),
+                    c("n_dot_v", NV),
+                    c("n_dot_l", NL),
+                    c("v_dot_h", VH),
+                    p("alpha", 0.3, &ALPHA_BAD),
+                    rgb("f0", [0.9, 0.6, 0.3], &UNIT_BAD),
+                ],
+                |x| {
+                    o3(ct::beckmann_schlick_rgb(
+                        x[0],
+                        x[1],
+                        x[2],
+                        x[3],
+                        x[4],
+                        v3(x, 5),
+                    ))
+                },
+            )
+            .dep("f0.x", &[0])
+            .dep("f0.y", &[1])
+            .dep("f0.z", &[2]),
+        );
+        t.push(k(
+            "cook_torrance::beckmann_dielectric",
+            vec![
+                c("n_dot_h", NH),
+                c("n_dot_v", NV),
+                c("n_dot_l", NL),
+                c("v_dot_h", VH),
+                p("alpha", 0.3, &ALPHA_BAD),
+                p("eta", 1.5, &ETA_BAD),
+            ],
+            |x| vec![ct::beckmann_dielectric(x[0], x[1], x[2], x[3], x[4], x[5])],
+        ));
+    }
 }
 
 #[cfg(feature = "sampling")]
@@ -704,6 +842,37 @@ fn sampling_rows<T: Real>(t: &mut Vec<Kernel<T>>) {
             vec![v("wo", WO), u()],
             move |x| o4(sm::ggx_vndf_spherical_cap(&g, v3(x, 0), x[3], x[4])),
         ));
+        // The Fresnel closure returns a constant F >= 0: its NaN reaches the weight only.
+        t.push(
+            k(
+                "sampling::ggx_reflection",
+                vec![v("wo", WO), u(), p("fresnel", 0.5, &[-0.1, -INF])],
+                move |x| {
+                    let (wi, pdf, w) = sm::ggx_reflection(&g, v3(x, 0), x[3], x[4], |_| x[5]);
+                    vec![wi.x, wi.y, wi.z, pdf, w]
+                },
+            )
+            .dep("fresnel", &[4]),
+        );
+        t.push(
+            k(
+                "sampling::ggx_reflection_rgb",
+                vec![v("wo", WO), u(), rgb("f", [0.9, 0.6, 0.3], &[-0.1, -INF])],
+                move |x| {
+                    let f = v3(x, 5);
+                    let (wi, pdf, w) = sm::ggx_reflection_rgb(&g, v3(x, 0), x[3], x[4], |_| f);
+                    vec![wi.x, wi.y, wi.z, pdf, w.x, w.y, w.z]
+                },
+            )
+            .dep("f.x", &[4])
+            .dep("f.y", &[5])
+            .dep("f.z", &[6]),
+        );
+        t.push(k(
+            "sampling::ggx_reflection_pdf",
+            vec![v("wo", WO), v("wi", WI)],
+            move |x| vec![sm::ggx_reflection_pdf(&g, v3(x, 0), v3(x, 3))],
+        ));
     }
     #[cfg(feature = "beckmann")]
     {
@@ -730,6 +899,36 @@ fn sampling_rows<T: Real>(t: &mut Vec<Kernel<T>>) {
             "sampling::beckmann_vndf",
             vec![v("wo", WO), u()],
             move |x| o4(sm::beckmann_vndf(&b, v3(x, 0), x[3], x[4])),
+        ));
+        t.push(
+            k(
+                "sampling::beckmann_reflection",
+                vec![v("wo", WO), u(), p("fresnel", 0.5, &[-0.1, -INF])],
+                move |x| {
+                    let (wi, pdf, w) = sm::beckmann_reflection(&b, v3(x, 0), x[3], x[4], |_| x[5]);
+                    vec![wi.x, wi.y, wi.z, pdf, w]
+                },
+            )
+            .dep("fresnel", &[4]),
+        );
+        t.push(
+            k(
+                "sampling::beckmann_reflection_rgb",
+                vec![v("wo", WO), u(), rgb("f", [0.9, 0.6, 0.3], &[-0.1, -INF])],
+                move |x| {
+                    let f = v3(x, 5);
+                    let (wi, pdf, w) = sm::beckmann_reflection_rgb(&b, v3(x, 0), x[3], x[4], |_| f);
+                    vec![wi.x, wi.y, wi.z, pdf, w.x, w.y, w.z]
+                },
+            )
+            .dep("f.x", &[4])
+            .dep("f.y", &[5])
+            .dep("f.z", &[6]),
+        );
+        t.push(k(
+            "sampling::beckmann_reflection_pdf",
+            vec![v("wo", WO), v("wi", WI)],
+            move |x| vec![sm::beckmann_reflection_pdf(&b, v3(x, 0), v3(x, 3))],
         ));
     }
 }
@@ -1552,6 +1751,25 @@ fn every_kernel_keeps_the_bad_input_rule_on_every_lane_type() {
 const NOT_KERNELS: &[(&str, &str)] = &[
     ("error::require", "validation helper of the constructors"),
     ("V3::splat", "constructor"),
+    ("V3::broadcast", "constructor: one vector in every lane"),
+    ("V3::to_array", "accessor"),
+    ("V3::map", "applies the caller's function per component"),
+    (
+        "V3::zip_map",
+        "applies the caller's function per component pair",
+    ),
+    (
+        "V3::min",
+        "component-wise Real::min: its NaN rule, per component",
+    ),
+    (
+        "V3::max",
+        "component-wise Real::max: its NaN rule, per component",
+    ),
+    (
+        "V3::abs",
+        "component-wise |x|: NaN stays in its own component",
+    ),
     ("V3::unit_z", "constructor"),
     ("V3::select", "lane select, no arithmetic"),
     ("V3::lane", "lane accessor"),
