@@ -30,6 +30,13 @@
 //! assert!(specular(f32::NAN, 1.0, 1.0, 1.0, 0.5).is_nan());
 //! # }
 //! ```
+//! All features are on by default (`default-features = false` keeps only what you list). For a
+//! whole glTF 2.0 material rather than its terms, `material::MetallicRoughness` evaluates and
+//! samples base colour, metallic and roughness from local-frame directions (the repository's
+//! `examples/sphere.rs` shades a sphere with it in under 60 lines). Lanes equal scalars bit for
+//! bit on a given target; `Real::mul_add` is fused only where the target has FMA, so results
+//! can differ between targets in the last bit, never between lane and scalar.
+//!
 //! In generic code `T::splat(x)` (from [`Real`]) takes an `f64`; on a concrete `f32x8`,
 //! `f32x8::splat` is `wide`'s and takes an `f32`, and `f32x8::from_f64(x)` takes an `f64`
 //! (the [`real`] module's "two splats" table). [`V3`] carries directions and colours on any
@@ -82,8 +89,9 @@
 //! ## Accuracy
 //! The exact functions (NDFs, Smith terms, Fresnel, the transfer functions, the exact diffuse
 //! and Phong lobes) are held to ULP bounds against a correctly rounded reference (MPFR at 256
-//! bits, evaluating each paper's own definition) by the `brdf-oracle` workspace member; the
-//! measured table is `docs/accuracy.md` in the repository, and the report prints it.
+//! bits, evaluating each paper's own definition) by the `brdf-oracle` workspace member of the
+//! repository; the measured table is in the README ("Accuracy promises") and `docs/accuracy.md`,
+//! and the repository's report (`cargo run --release --example report`) prints it.
 //!
 #![no_std]
 #![deny(missing_docs)]

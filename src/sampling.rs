@@ -2,6 +2,11 @@
 //! distribution of normals D(m) cos(theta_m) and the distribution of visible normals
 //! D_wo(m) = G1(wo) max(0, wo.m) D(m) / |wo.z|, each with its pdf.
 //!
+//! Directions live in the local shading frame (normal = +z; [`crate::frame::Frame`] takes
+//! world-space vectors there and back), and both `wo` and the sampled `wi` point away from
+//! the surface: wi = 2 (wo.m) m - wo, which is [`crate::vec3::V3::mirror`], the negative of
+//! glam's and GLSL's `reflect` of an incident direction.
+//!
 //! Every sampler maps two uniform numbers `u1, u2` in [0, 1) to a unit local-frame direction
 //! and returns it with its pdf (with respect to solid angle), so a caller never pairs a
 //! sampler with the wrong pdf. u = 1 is clamped to the largest float below 1 (where a mapping

@@ -52,7 +52,9 @@ use wide::{f32x8, f64x4};
 /// RGB colour.
 ///
 /// Arithmetic is component-wise: `+`, `-`, `*` and `/` between two vectors, `*` and `/` by a
-/// component value `T` on either side of `*` (`v * s`, `s * v`, `v / s`), and the assigning
+/// component value `T` (`v * s`, `v / s`; `s * v` too for the concrete types `f32`, `f64`,
+/// `f32x8` and `f64x4`, but not in code generic over `T: Real`, where Rust's orphan rule
+/// allows no `impl Mul<V3<T>> for T`: write `v * s` there), and the assigning
 /// forms `+=`, `-=`, `*=`, `/=`. Each component is rounded once per operation, exactly as the
 /// scalar expression would be, so lanes equal scalars bit for bit.
 ///
