@@ -136,6 +136,16 @@ impl Mask for f64x4 {
 ///
 /// Every kernel in this crate is generic over `Real`. See the [module docs](self) for the
 /// shared NaN semantics and the accuracy table of the lane paths.
+///
+/// Implemented for `f32`, `f64`, `wide::f32x8` and `wide::f64x4` (all foreign types, so
+/// rustdoc's "Implementors" list below stays empty); a kernel generic over `T: Real` accepts
+/// exactly these four.
+///
+/// On a concrete `f32` or `f64` the inherent methods of the same name win over this trait's:
+/// `a.min(b)` on two `f32`s is `f32::min`, which ignores a NaN on either side, while
+/// `Real::min` (what generic code calls) propagates a NaN in `self`. Write
+/// `Real::min(a, b)` in concrete code that must behave as the kernels do; the same holds for
+/// `max`, `clamp`, `mul_add` (std's is always fused) and `splat` (see the module docs).
 pub trait Real:
     Copy
     + Debug
