@@ -8,6 +8,7 @@
 //! --nocapture`
 #![cfg(feature = "diffuse")]
 
+mod common;
 use brdf::diffuse::{
     AshikhminShirley, ShirleyCoupled, ashikhmin_shirley, fresnel_mix, fresnel_mix_schlick,
     fresnel_weight_normalized, fresnel_weight_symmetric, shirley_coupled,
@@ -282,14 +283,10 @@ fn invalid_parameters_give_nan_and_param_error() {
     invalid_params::<f64x4>("f64x4");
 }
 
-struct Inputs(u64);
+struct Inputs(common::Rng);
 impl Inputs {
     fn next(&mut self) -> f64 {
-        self.0 = self
-            .0
-            .wrapping_mul(6_364_136_223_846_793_005)
-            .wrapping_add(1_442_695_040_888_963_407);
-        (self.0 >> 11) as f64 / (1u64 << 53) as f64
+        self.0.next_f64()
     }
     /// Inputs for one kernel: cosines with one in eight at an edge, unit values in [0, 1).
     fn case(&mut self, n: usize) -> Vec<f64> {
@@ -309,7 +306,7 @@ impl Inputs {
 /// Lanes against scalars, bit for bit (only +, *, mul_add, /, min/max and selects).
 #[test]
 fn lanes_equal_scalars() {
-    let mut inputs = Inputs(3);
+    let mut inputs = Inputs(common::Rng(3));
     let mut n = 0;
     for (k, good, _) in all_kernels::<f64>() {
         let f32s = all_kernels::<f32>();
@@ -353,7 +350,7 @@ fn lanes_equal_scalars() {
 /// not hold there. Bound 1e-6: the measured maximum (printed) is a few f32 ulps of 1.
 #[test]
 fn f32_within_stated_bound_of_f64() {
-    let mut inputs = Inputs(5);
+    let mut inputs = Inputs(common::Rng(5));
     let k32 = all_kernels::<f32>();
     for (j, (k, good, f64k)) in all_kernels::<f64>().into_iter().enumerate() {
         let mut worst = 0.0_f64;
