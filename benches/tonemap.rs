@@ -30,7 +30,7 @@ fn bench(c: &mut Criterion) {
     let mut g = c.benchmark_group("tonemap");
     g.throughput(Throughput::Elements(N as u64));
     for (i, op) in Operator::all().into_iter().enumerate() {
-        // The three AgX looks share a variant name: the index keeps the IDs unique.
+        // AgX variants with different looks share a variant name: the index keeps IDs unique.
         let name = format!(
             "{i:02} {}",
             format!("{op:?}").split('(').next().unwrap_or("op")

@@ -13,13 +13,15 @@
 
 #[path = "report_sections/lobes.rs"]
 mod lobes;
+#[path = "report_sections/tonemap.rs"]
+mod tonemap_section;
 
 use brdf::cook_torrance;
 use brdf::frame::Frame;
 use brdf::ggx::{self, Ggx};
 use brdf::integrate::{self, Config, Estimate};
 use brdf::microfacet::Microfacet;
-use brdf::tonemap::Operator;
+use brdf::tonemap::{AgxLook, Operator};
 use brdf::wide::f32x8;
 use brdf::{Real, V3, beckmann, color, fresnel};
 use core::f64::consts::PI;
@@ -241,8 +243,19 @@ fn tonemap_table() {
 
 fn op_name(op: &Operator) -> String {
     match op {
-        Operator::Agx(look) if *look == brdf::tonemap::AgxLook::PUNCHY => "Agx punchy".into(),
-        Operator::Agx(look) if *look == brdf::tonemap::AgxLook::GOLDEN => "Agx golden".into(),
+        Operator::AgxMinimal(look) | Operator::AgxFilament(look) if *look != AgxLook::BASE => {
+            let which = if matches!(op, Operator::AgxMinimal(_)) {
+                "AgxMinimal"
+            } else {
+                "AgxFilament"
+            };
+            let name = if *look == AgxLook::PUNCHY {
+                "punchy"
+            } else {
+                "golden"
+            };
+            format!("{which} {name}")
+        }
         _ => format!("{op:?}")
             .split('(')
             .next()
@@ -450,6 +463,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     let loss = energy_loss();
     approximation_errors();
     tonemap_table();
+    tonemap_section::peers_table();
     lobes::diffuse_albedo()?;
     lobes::phong_comparison()?;
     lobes::material_furnace()?;

@@ -257,8 +257,95 @@ pub const ACES_HILL_OUTPUT: Mat3 = [
     [-0.00327, -0.07276, 1.07602],
 ];
 
-/// AgX inset: linear Rec.709 into the AgX log-encoding space (Troy Sobotka's AgX, as
-/// published in the minimal implementation of Wrensch 2023, "Minimal AgX Implementation").
+/// Linear Rec.709 (sRGB primaries) to linear Rec.2020, both with the D65 white: the exact
+/// product of the two primaries' RGB-to-XYZ matrices (ITU-R BT.709-6 and BT.2020-2 primaries,
+/// derived as in SMPTE RP 177), to f64 precision; ITU-R BT.2087 tabulates it to 4 decimals.
+/// Every entry is positive, so it maps non-negative colours to non-negative colours.
+pub const REC709_TO_REC2020: Mat3 = [
+    [
+        0.627_403_895_934_699,
+        0.329_283_038_377_883_7,
+        0.043_313_065_687_417_225,
+    ],
+    [
+        0.069_097_289_358_232_08,
+        0.919_540_395_075_458_7,
+        0.011_362_315_566_309_178,
+    ],
+    [
+        0.016_391_438_875_150_28,
+        0.088_013_307_877_225_75,
+        0.895_595_253_247_624,
+    ],
+];
+
+/// Linear Rec.2020 to linear Rec.709 (D65), the exact inverse of [`REC709_TO_REC2020`]
+/// (ITU-R BT.2407 tabulates it to 4 decimals). Colours outside the Rec.709 gamut come out
+/// with negative components.
+pub const REC2020_TO_REC709: Mat3 = [
+    [
+        1.660_491_002_108_434_5,
+        -0.587_641_138_788_549_5,
+        -0.072_849_863_319_884_88,
+    ],
+    [
+        -0.124_550_474_521_590_74,
+        1.132_899_897_125_960_3,
+        -0.008_349_422_604_369_477,
+    ],
+    [
+        -0.018_150_763_354_905_303,
+        -0.100_578_898_008_007_39,
+        1.118_729_661_362_912_7,
+    ],
+];
+
+/// AgX inset for Rec.2020 input, from Blender's AgX (Eary Chow's `AgXBaseRec2020.py`), as
+/// Filament's `ToneMapper.cpp` and three.js's `AgXToneMapping` ship it. Rows sum to 1, so
+/// greys stay grey.
+pub const AGX_INSET_REC2020: Mat3 = [
+    [
+        0.856_627_153_315_983,
+        0.095_121_240_538_158_8,
+        0.048_251_606_145_858_3,
+    ],
+    [
+        0.137_318_972_929_847,
+        0.761_241_990_602_591,
+        0.101_439_036_467_562,
+    ],
+    [
+        0.111_898_212_999_95,
+        0.076_799_418_603_190_3,
+        0.811_302_368_396_859,
+    ],
+];
+
+/// AgX outset for Rec.2020: the exact inverse of Blender's published outset-inverse matrix
+/// (Filament's `AgXOutsetMatrixInv`, rows (0.899796955911611, 0.0871996192028351,
+/// 0.013003424885555), (0.11142098895748, 0.875575586156966, 0.0130034248855548),
+/// (0.11142098895748, 0.0871996192028349, 0.801379391839686)), which Filament and three.js
+/// invert; it is not the inverse of [`AGX_INSET_REC2020`].
+pub const AGX_OUTSET_REC2020: Mat3 = [
+    [
+        1.127_100_581_814_436_6,
+        -0.110_606_643_096_603_22,
+        -0.016_493_938_717_834_57,
+    ],
+    [
+        -0.141_329_763_498_438_26,
+        1.157_823_702_216_271_8,
+        -0.016_493_938_717_834_253,
+    ],
+    [
+        -0.141_329_763_498_438_26,
+        -0.110_606_643_096_602_92,
+        1.251_936_406_595_040_2,
+    ],
+];
+
+/// AgX inset for Rec.709 input: linear Rec.709 into the AgX log-encoding space (Troy Sobotka's
+/// AgX, as published by Wrensch 2023, "Minimal AgX Implementation"). Rows sum to 1.
 pub const AGX_INSET: Mat3 = [
     [
         0.842_479_062_253_094,
@@ -273,7 +360,8 @@ pub const AGX_INSET: Mat3 = [
     [0.042_375_654_905_705_1, 0.078_433_6, 0.879_142_973_793_104],
 ];
 
-/// AgX outset: the inverse of [`AGX_INSET`], back to Rec.709.
+/// AgX outset for Rec.709, as Wrensch 2023 publishes it: the inverse of [`AGX_INSET`] (to
+/// about 1e-15), back to Rec.709.
 pub const AGX_OUTSET: Mat3 = [
     [
         1.196_879_005_120_17,

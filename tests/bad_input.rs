@@ -995,6 +995,11 @@ fn tonemap_rows<T: Real>(t: &mut Vec<Kernel<T>>) {
         vec![c("c", 0.4), p("white", 4.0, &[0.0, -1.0, -INF])],
         |x| vec![tm::reinhard_extended(x[0], x[1])],
     ));
+    t.push(k(
+        "tonemap::reinhard_extended_luminance",
+        vec![v("c", col), p("white", 4.0, &[0.0, -1.0, -INF])],
+        |x| o3(tm::reinhard_extended_luminance(v3(x, 0), x[3])),
+    ));
     for (name, f) in [
         (
             "tonemap::reinhard_luminance",
@@ -1015,8 +1020,14 @@ fn tonemap_rows<T: Real>(t: &mut Vec<Kernel<T>>) {
     t.push(k("tonemap::uchimura", vec![c("c", 0.4)], |x| {
         vec![tm::uchimura(x[0], &UchimuraParams::GRAN_TURISMO)]
     }));
-    t.push(k("tonemap::agx", vec![v("c", col)], |x| {
-        o3(tm::agx(v3(x, 0), &AgxLook::PUNCHY))
+    t.push(k("tonemap::agx_minimal", vec![v("c", col)], |x| {
+        o3(tm::agx_minimal(v3(x, 0), &AgxLook::PUNCHY))
+    }));
+    t.push(k("tonemap::agx_threejs", vec![v("c", col)], |x| {
+        o3(tm::agx_threejs(v3(x, 0)))
+    }));
+    t.push(k("tonemap::agx_filament", vec![v("c", col)], |x| {
+        o3(tm::agx_filament(v3(x, 0), &AgxLook::GOLDEN_FILAMENT))
     }));
     for (i, op) in Operator::all().into_iter().enumerate() {
         let variant: String = format!("{op:?}")
@@ -1793,6 +1804,11 @@ const NOT_KERNELS: &[(&str, &str)] = &[
     ("LottesParams::default_curve", "constructor"),
     ("LottesParams::new", "validating constructor"),
     ("AgxLook::new", "validating constructor"),
+    ("AgxLook::slope", "getter"),
+    ("AgxLook::power", "getter"),
+    ("AgxLook::saturation", "getter"),
+    ("Exposure::new", "validating constructor"),
+    ("Exposure::value", "getter"),
     ("Operator::apply_vec3", "glam wrapper of Operator::apply"),
     ("Operator::apply_vec3a", "glam wrapper of Operator::apply"),
     ("Operator::all", "list of operators"),
@@ -1865,7 +1881,9 @@ const SOURCES: &[(&str, &str)] = &[
     ("microfacet", include_str!("../src/microfacet.rs")),
     ("phong", include_str!("../src/phong.rs")),
     ("sampling", include_str!("../src/sampling.rs")),
-    ("tonemap", include_str!("../src/tonemap.rs")),
+    ("tonemap", include_str!("../src/tonemap/mod.rs")),
+    ("tonemap", include_str!("../src/tonemap/curves.rs")),
+    ("tonemap", include_str!("../src/tonemap/agx.rs")),
     ("vec3", include_str!("../src/vec3.rs")),
 ];
 

@@ -198,6 +198,70 @@ fn transfer_functions_match_the_standards_at_reference_points() {
     assert!(srgb_eotf(f64::from_bits(0.040_45f64.to_bits() + 1)) > 0.040_45 / 12.92);
 }
 
+/// Just above the sRGB OETF's breakpoint, (0.0031308, 0.0031308 + 2.2e-9], the power piece
+/// applies: the first 8 floats above it and points spread over that interval, in f32 and f64,
+/// within 1 ulp (f32) or 4 (f64) of 1.055 x^(1/2.4) - 0.055 evaluated in f64, and 2.85e-8
+/// below the linear piece, never equal to it. Also the Rec.709 OETF's f32 neighbours of 0.018.
+#[test]
+fn transfer_functions_take_the_standards_piece_next_to_each_breakpoint() {
+    let power = |x: f64| 1.055 * x.powf(1.0 / 2.4) - 0.055;
+    let b = color::SRGB_OETF_BREAK;
+    let mut xs64: Vec<f64> = (1..=8).map(|k| f64::from_bits(b.to_bits() + k)).collect();
+    xs64.extend((1..=22).map(|k| b + f64::from(k) * 1e-10));
+    for x in xs64 {
+        let y = srgb_oetf(x);
+        let ulps = (y.to_bits() as i64 - power(x).to_bits() as i64).unsigned_abs();
+        // The f64 power piece here is itself a few roundings (the oracle holds srgb_oetf to
+        // 2.9 ulp of the exact value): 4 ulp tell the pieces apart by 6 orders of magnitude.
+        assert!(
+            ulps <= 4,
+            "f64 oetf({x:e}) = {y:e}, power piece {:e}",
+            power(x)
+        );
+        assert!(
+            12.92 * x - y > 2.8e-8,
+            "f64 oetf({x:e}) on the linear piece"
+        );
+    }
+    let b32 = b as f32;
+    for k in 1..=8u32 {
+        let x = f32::from_bits(b32.to_bits() + k);
+        assert!(f64::from(x) > b);
+        let y = srgb_oetf(x);
+        let want = power(f64::from(x)) as f32;
+        let ulps = (y.to_bits() as i64 - want.to_bits() as i64).unsigned_abs();
+        assert!(ulps <= 1, "f32 oetf({x:e}) = {y:e}, power piece {want:e}");
+    }
+    // Below and at the breakpoint (as exact values), the linear piece.
+    for k in 0..=8u32 {
+        let x = f32::from_bits(b32.to_bits() - k);
+        if f64::from(x) <= b {
+            assert_eq!(
+                srgb_oetf(x),
+                (12.92 * f64::from(x)) as f32,
+                "f32 oetf({x:e})"
+            );
+        }
+    }
+    // Rec.709: 4.5 L up to 0.018 (as an exact value), 1.099 L^0.45 - 0.099 above.
+    let r = color::REC709_BREAK as f32;
+    for k in -8i32..=8 {
+        let x = f32::from_bits((r.to_bits() as i32 + k) as u32);
+        let xe = f64::from(x);
+        let want = if xe <= color::REC709_BREAK {
+            4.5 * xe
+        } else {
+            1.099 * xe.powf(0.45) - 0.099
+        } as f32;
+        let ulps = (rec709_oetf(x).to_bits() as i64 - want.to_bits() as i64).unsigned_abs();
+        assert!(
+            ulps <= 1,
+            "f32 rec709({x:e}) = {}, want {want:e}",
+            rec709_oetf(x)
+        );
+    }
+}
+
 #[test]
 fn nan_is_reported_and_negative_input_is_clamped_on_every_lane_type() {
     fn check<T: Real>() {

@@ -175,10 +175,21 @@ fn conditioned(
     reference: fn(&[Float]) -> Float,
     ill: bool,
 ) -> Vec<Vec<f64>> {
+    conditioned_in(ty, all, reference, harness::FIRST, ill)
+}
+
+/// [`conditioned`] with the condition number taken in the coordinates `perturbed`.
+pub(crate) fn conditioned_in(
+    ty: Ty,
+    all: fn(Ty) -> Vec<Vec<f64>>,
+    reference: fn(&[Float]) -> Float,
+    perturbed: &[usize],
+    ill: bool,
+) -> Vec<Vec<f64>> {
     all(ty)
         .into_iter()
         .map(|p| p.into_iter().map(|x| ty.round(x)).collect::<Vec<f64>>())
-        .filter(|p| (harness::condition(reference, ty, p) > harness::KAPPA_MAX) == ill)
+        .filter(|p| (harness::condition(reference, ty, p, perturbed) > harness::KAPPA_MAX) == ill)
         .collect()
 }
 
@@ -431,7 +442,7 @@ fn exponent_points(ty: Ty) -> Vec<Vec<f64>> {
 #[must_use]
 pub fn all() -> Vec<Case> {
     use Family::{Color, Fresnel, Lobes, Microfacet as Mf};
-    vec![
+    let mut all = vec![
         Case {
             name: "ggx::d",
             family: Mf,
@@ -439,6 +450,7 @@ pub fn all() -> Vec<Case> {
             reference: |x| r::ggx_d(&x[0], &x[1]),
             kernels: kernel!(|x| ggx::d(x[0], x[1])),
             points: cos_alpha,
+            perturbed: harness::FIRST,
         },
         Case {
             name: "ggx::d_aniso",
@@ -447,6 +459,7 @@ pub fn all() -> Vec<Case> {
             reference: |x| r::ggx_d_aniso(&x[1], &x[2], &x[0], &x[3], &x[4]),
             kernels: kernel!(|x| ggx::d_aniso(x[0], x[1], x[2], x[3], x[4])),
             points: nh_th_bh_alphas,
+            perturbed: harness::FIRST,
         },
         Case {
             name: "ggx::lambda",
@@ -455,6 +468,7 @@ pub fn all() -> Vec<Case> {
             reference: |x| r::ggx_lambda(&x[0], &x[1]),
             kernels: kernel!(|x| ggx::lambda(x[0], x[1])),
             points: cos_alpha,
+            perturbed: harness::FIRST,
         },
         Case {
             name: "ggx::g1",
@@ -463,6 +477,7 @@ pub fn all() -> Vec<Case> {
             reference: |x| r::g1(r::ggx_lambda(&x[0], &x[1])),
             kernels: kernel!(|x| ggx::g1(x[0], x[1])),
             points: cos_alpha,
+            perturbed: harness::FIRST,
         },
         Case {
             name: "ggx::v_correlated",
@@ -475,6 +490,7 @@ pub fn all() -> Vec<Case> {
             },
             kernels: kernel!(|x| ggx::v_correlated(x[0], x[1], x[2])),
             points: two_cos_alpha,
+            perturbed: harness::FIRST,
         },
         Case {
             name: "Ggx::lambda",
@@ -483,6 +499,7 @@ pub fn all() -> Vec<Case> {
             reference: |x| r::ggx_lambda_vec([&x[0], &x[1], &x[2]], &x[3], &x[4]),
             kernels: kernel!(|x| Ggx::new(x[3], x[4]).unwrap().lambda(v3(x, 0))),
             points: dir_alphas,
+            perturbed: harness::FIRST,
         },
         Case {
             name: "Ggx::g2_correlated",
@@ -497,6 +514,7 @@ pub fn all() -> Vec<Case> {
                 .unwrap()
                 .g2_correlated(v3(x, 0), v3(x, 3))),
             points: two_dirs_alphas,
+            perturbed: harness::FIRST,
         },
         Case {
             name: "Ggx::g2_separable",
@@ -511,6 +529,7 @@ pub fn all() -> Vec<Case> {
                 .unwrap()
                 .g2_separable(v3(x, 0), v3(x, 3))),
             points: two_dirs_alphas,
+            perturbed: harness::FIRST,
         },
         Case {
             name: "Ggx::v_correlated",
@@ -525,6 +544,7 @@ pub fn all() -> Vec<Case> {
                 .unwrap()
                 .v_correlated(v3(x, 0), v3(x, 3))),
             points: two_dirs_alphas,
+            perturbed: harness::FIRST,
         },
         Case {
             name: "beckmann::d",
@@ -533,6 +553,7 @@ pub fn all() -> Vec<Case> {
             reference: |x| r::beckmann_d(&x[0], &x[1]),
             kernels: kernel!(|x| beckmann::d(x[0], x[1])),
             points: cos_alpha,
+            perturbed: harness::FIRST,
         },
         Case {
             name: "Beckmann::d",
@@ -541,6 +562,7 @@ pub fn all() -> Vec<Case> {
             reference: |x| r::beckmann_d_aniso(&x[0], &x[1], &x[2], &x[3], &x[4]),
             kernels: kernel!(|x| Beckmann::new(x[3], x[4]).unwrap().d(v3(x, 0))),
             points: dir_alphas,
+            perturbed: harness::FIRST,
         },
         Case {
             name: "beckmann::lambda",
@@ -549,6 +571,7 @@ pub fn all() -> Vec<Case> {
             reference: |x| r::beckmann_lambda(&x[0], &x[1]),
             kernels: kernel!(|x| beckmann::lambda(x[0], x[1])),
             points: cos_alpha_beckmann,
+            perturbed: harness::FIRST,
         },
         Case {
             name: "beckmann::g1",
@@ -557,6 +580,7 @@ pub fn all() -> Vec<Case> {
             reference: |x| r::g1(r::beckmann_lambda(&x[0], &x[1])),
             kernels: kernel!(|x| beckmann::g1(x[0], x[1])),
             points: cos_alpha_beckmann,
+            perturbed: harness::FIRST,
         },
         Case {
             name: "Beckmann::lambda",
@@ -565,6 +589,7 @@ pub fn all() -> Vec<Case> {
             reference: |x| r::beckmann_lambda_vec([&x[0], &x[1], &x[2]], &x[3], &x[4]),
             kernels: kernel!(|x| Beckmann::new(x[3], x[4]).unwrap().lambda(v3(x, 0))),
             points: dir_alphas,
+            perturbed: harness::FIRST,
         },
         Case {
             name: "Beckmann::v_correlated",
@@ -579,6 +604,7 @@ pub fn all() -> Vec<Case> {
                 .unwrap()
                 .v_correlated(v3(x, 0), v3(x, 3))),
             points: two_dirs_alphas,
+            perturbed: harness::FIRST,
         },
         Case {
             name: "fresnel::dielectric",
@@ -587,6 +613,7 @@ pub fn all() -> Vec<Case> {
             reference: ref_dielectric,
             kernels: kernel!(|x| fresnel::dielectric(x[0], x[1])),
             points: dielectric_main,
+            perturbed: harness::FIRST,
         },
         Case {
             name: "fresnel::dielectric (ill-conditioned)",
@@ -595,6 +622,7 @@ pub fn all() -> Vec<Case> {
             reference: ref_dielectric,
             kernels: kernel!(|x| fresnel::dielectric(x[0], x[1])),
             points: dielectric_ill,
+            perturbed: harness::FIRST,
         },
         Case {
             name: "fresnel::dielectric_polarized (Rs)",
@@ -603,6 +631,7 @@ pub fn all() -> Vec<Case> {
             reference: ref_rs,
             kernels: kernel!(|x| fresnel::dielectric_polarized(x[0], x[1]).0),
             points: rs_main,
+            perturbed: harness::FIRST,
         },
         Case {
             name: "fresnel::dielectric_polarized (Rs) (ill-conditioned)",
@@ -611,6 +640,7 @@ pub fn all() -> Vec<Case> {
             reference: ref_rs,
             kernels: kernel!(|x| fresnel::dielectric_polarized(x[0], x[1]).0),
             points: rs_ill,
+            perturbed: harness::FIRST,
         },
         Case {
             name: "fresnel::dielectric_polarized (Rp)",
@@ -619,6 +649,7 @@ pub fn all() -> Vec<Case> {
             reference: ref_rp,
             kernels: kernel!(|x| fresnel::dielectric_polarized(x[0], x[1]).1),
             points: rp_main,
+            perturbed: harness::FIRST,
         },
         Case {
             name: "fresnel::dielectric_polarized (Rp) (ill-conditioned)",
@@ -627,6 +658,7 @@ pub fn all() -> Vec<Case> {
             reference: ref_rp,
             kernels: kernel!(|x| fresnel::dielectric_polarized(x[0], x[1]).1),
             points: rp_ill,
+            perturbed: harness::FIRST,
         },
         Case {
             name: "fresnel::conductor",
@@ -635,6 +667,7 @@ pub fn all() -> Vec<Case> {
             reference: ref_conductor,
             kernels: kernel!(|x| fresnel::conductor(x[0], x[1], x[2])),
             points: conductor_main,
+            perturbed: harness::FIRST,
         },
         Case {
             name: "fresnel::conductor (ill-conditioned)",
@@ -643,6 +676,7 @@ pub fn all() -> Vec<Case> {
             reference: ref_conductor,
             kernels: kernel!(|x| fresnel::conductor(x[0], x[1], x[2])),
             points: conductor_ill,
+            perturbed: harness::FIRST,
         },
         Case {
             name: "fresnel::schlick",
@@ -651,6 +685,7 @@ pub fn all() -> Vec<Case> {
             reference: |x| r::schlick(&x[0], &x[1]),
             kernels: kernel!(|x| fresnel::schlick(x[0], x[1])),
             points: f0_cos,
+            perturbed: harness::FIRST,
         },
         Case {
             name: "fresnel::f0_from_ior",
@@ -659,6 +694,7 @@ pub fn all() -> Vec<Case> {
             reference: |x| r::f0_from_ior(&x[0]),
             kernels: kernel!(|x| fresnel::f0_from_ior(x[0])),
             points: eta_only,
+            perturbed: harness::FIRST,
         },
         Case {
             name: "color::srgb_oetf",
@@ -667,6 +703,7 @@ pub fn all() -> Vec<Case> {
             reference: |x| r::srgb_oetf(&x[0]),
             kernels: kernel!(|x| color::srgb_oetf(x[0])),
             points: srgb_oetf_points,
+            perturbed: harness::FIRST,
         },
         Case {
             name: "color::srgb_eotf",
@@ -675,6 +712,7 @@ pub fn all() -> Vec<Case> {
             reference: |x| r::srgb_eotf(&x[0]),
             kernels: kernel!(|x| color::srgb_eotf(x[0])),
             points: srgb_eotf_points,
+            perturbed: harness::FIRST,
         },
         Case {
             name: "color::rec709_oetf",
@@ -683,6 +721,7 @@ pub fn all() -> Vec<Case> {
             reference: |x| r::rec709_oetf(&x[0]),
             kernels: kernel!(|x| color::rec709_oetf(x[0])),
             points: rec709_points,
+            perturbed: harness::FIRST,
         },
         Case {
             name: "diffuse::lambert",
@@ -691,6 +730,7 @@ pub fn all() -> Vec<Case> {
             reference: |x| r::lambert(&x[0], &x[1], &x[2]),
             kernels: kernel!(|x| diffuse::lambert(x[0], x[1], x[2])),
             points: lambert_points,
+            perturbed: harness::FIRST,
         },
         Case {
             name: "diffuse::oren_nayar",
@@ -699,6 +739,7 @@ pub fn all() -> Vec<Case> {
             reference: |x| r::oren_nayar(&x[0], &x[1], &x[2], &x[3], &x[4]),
             kernels: kernel!(|x| diffuse::oren_nayar(x[0], x[1], x[2], x[3], x[4])),
             points: oren_nayar_points,
+            perturbed: harness::FIRST,
         },
         Case {
             name: "diffuse::burley",
@@ -707,6 +748,7 @@ pub fn all() -> Vec<Case> {
             reference: |x| r::burley(&x[0], &x[1], &x[2], &x[3], &x[4]),
             kernels: kernel!(|x| diffuse::burley(x[0], x[1], x[2], x[3], x[4])),
             points: burley_points,
+            perturbed: harness::FIRST,
         },
         Case {
             name: "diffuse::burley_renormalized",
@@ -715,6 +757,7 @@ pub fn all() -> Vec<Case> {
             reference: |x| r::burley_renormalized(&x[0], &x[1], &x[2], &x[3], &x[4]),
             kernels: kernel!(|x| diffuse::burley_renormalized(x[0], x[1], x[2], x[3], x[4])),
             points: burley_points,
+            perturbed: harness::FIRST,
         },
         Case {
             name: "diffuse::oren_nayar_full",
@@ -723,6 +766,7 @@ pub fn all() -> Vec<Case> {
             reference: ref_oren_nayar_full,
             kernels: kernel!(|x| diffuse::oren_nayar_full(x[0], x[1], x[2], x[3], x[4])),
             points: oren_nayar_full_main,
+            perturbed: harness::FIRST,
         },
         Case {
             name: "diffuse::oren_nayar_full (ill-conditioned)",
@@ -731,6 +775,7 @@ pub fn all() -> Vec<Case> {
             reference: ref_oren_nayar_full,
             kernels: kernel!(|x| diffuse::oren_nayar_full(x[0], x[1], x[2], x[3], x[4])),
             points: oren_nayar_full_ill,
+            perturbed: harness::FIRST,
         },
         Case {
             name: "diffuse::oren_nayar_fujii",
@@ -739,6 +784,7 @@ pub fn all() -> Vec<Case> {
             reference: |x| r::oren_nayar_fujii(&x[0], &x[1], &x[2], &x[3], &x[4]),
             kernels: kernel!(|x| diffuse::oren_nayar_fujii(x[0], x[1], x[2], x[3], x[4])),
             points: fujii_points,
+            perturbed: harness::FIRST,
         },
         Case {
             name: "diffuse::eon",
@@ -747,6 +793,7 @@ pub fn all() -> Vec<Case> {
             reference: |x| r::eon(&x[0], &x[1], &x[2], &x[3], &x[4]),
             kernels: kernel!(|x| diffuse::eon(x[0], x[1], x[2], x[3], x[4])),
             points: fujii_points,
+            perturbed: harness::FIRST,
         },
         Case {
             name: "phong::normalized",
@@ -755,6 +802,7 @@ pub fn all() -> Vec<Case> {
             reference: |x| r::phong_normalized(&x[0], &x[1], &x[2], &x[3], &x[4]),
             kernels: kernel!(|x| phong::normalized(x[0], x[1], x[2], x[3], x[4])),
             points: phong_points,
+            perturbed: harness::FIRST,
         },
         Case {
             name: "phong::modified",
@@ -763,6 +811,7 @@ pub fn all() -> Vec<Case> {
             reference: |x| r::phong_modified(&x[0], &x[1], &x[2], &x[3], &x[4]),
             kernels: kernel!(|x| phong::modified(x[0], x[1], x[2], x[3], x[4])),
             points: phong_points,
+            perturbed: harness::FIRST,
         },
         Case {
             name: "phong::blinn_phong",
@@ -771,6 +820,7 @@ pub fn all() -> Vec<Case> {
             reference: |x| r::blinn_phong(&x[0], &x[1], &x[2], &x[3], &x[4]),
             kernels: kernel!(|x| phong::blinn_phong(x[0], x[1], x[2], x[3], x[4])),
             points: phong_points,
+            perturbed: harness::FIRST,
         },
         Case {
             name: "phong::blinn_phong_normalization_exact",
@@ -779,6 +829,7 @@ pub fn all() -> Vec<Case> {
             reference: |x| r::blinn_phong_normalization(&x[0]),
             kernels: kernel!(|x| phong::blinn_phong_normalization_exact(x[0])),
             points: exponent_points,
+            perturbed: harness::FIRST,
         },
         Case {
             name: "phong::blinn_phong_normalized",
@@ -787,8 +838,12 @@ pub fn all() -> Vec<Case> {
             reference: |x| r::blinn_phong_normalized(&x[0], &x[1], &x[2], &x[3], &x[4]),
             kernels: kernel!(|x| phong::blinn_phong_normalized(x[0], x[1], x[2], x[3], x[4])),
             points: phong_points,
+            perturbed: harness::FIRST,
         },
-    ]
+    ];
+    all.extend(crate::tonemap_cases::all());
+    all.extend(crate::tonemap_cases::agx());
+    all
 }
 
 /// The case named `name`.

@@ -141,7 +141,16 @@ pub enum Family {
     Color,
     /// Diffuse and Phong lobes.
     Lobes,
+    /// Tonemapping operators.
+    Tonemap,
 }
+
+/// The coordinates a condition number perturbs ([`condition`]): the first (a cosine).
+pub const FIRST: &[usize] = &[0];
+
+/// The coordinates a condition number perturbs for an RGB operator: each colour channel
+/// (coordinates 0, 1, 2), one at a time.
+pub const RGB: &[usize] = &[0, 1, 2];
 
 /// One exact function under test.
 pub struct Case {
@@ -158,6 +167,9 @@ pub struct Case {
     /// The points (each a vector of arguments) for a type; coordinates are rounded to the
     /// type by the harness.
     pub points: fn(Ty) -> Vec<Vec<f64>>,
+    /// The coordinates [`condition`] perturbs: [`FIRST`] (the cosine) for most functions,
+    /// [`RGB`] for operators on a colour.
+    pub perturbed: &'static [usize],
 }
 
 /// Worst-case figures of one kernel on one lane type.
@@ -248,11 +260,13 @@ pub const ILL_CONDITIONED: &str = " (ill-conditioned)";
 pub const KAPPA_MAX: f64 = 8.0;
 
 /// The condition number of `reference` at `p` (coordinates already rounded to `ty`) in the
-/// first argument: max over `p[0]` +- 1 ulp of `ty` of |f(p') - f(p)| / ulp(f(p)), in MPFR.
-/// 0 where f(p) is below [`Ty::threshold`] or overflows `ty` (those points are scored
-/// absolutely); a neighbour where the reference is NaN (outside its domain) is skipped.
+/// coordinates `perturbed` (one at a time): max over `p[i]` +- 1 ulp of `ty`, i in
+/// `perturbed`, of |f(p') - f(p)| / ulp(f(p)), in MPFR. 0 where f(p) is below
+/// [`Ty::threshold`] or overflows `ty` (those points are scored absolutely); a neighbour
+/// where the reference is NaN (outside its domain) is skipped, and so is the neighbour below
+/// a coordinate that is 0 (a colour channel's domain starts there).
 #[must_use]
-pub fn condition(reference: fn(&[Float]) -> Float, ty: Ty, p: &[f64]) -> f64 {
+pub fn condition(reference: fn(&[Float]) -> Float, ty: Ty, p: &[f64], perturbed: &[usize]) -> f64 {
     let eval = |q: &[f64]| {
         let prec = precision_for(q, PREC);
         let args: Vec<Float> = q.iter().map(|&v| Float::with_val(prec, v)).collect();
@@ -265,13 +279,18 @@ pub fn condition(reference: fn(&[Float]) -> Float, ty: Ty, p: &[f64]) -> f64 {
         return 0.0;
     }
     let mut kappa: f64 = 0.0;
-    for x in [ty.next_up(p[0]), ty.next_down(p[0])] {
-        let mut q = p.to_vec();
-        q[0] = x;
-        let g = eval(&q);
-        if !g.is_nan() {
-            let prec = g.prec().max(f.prec());
-            kappa = kappa.max(in_ulps(Float::with_val(prec, &g - &f), rounded, ty));
+    for &i in perturbed {
+        for x in [ty.next_up(p[i]), ty.next_down(p[i])] {
+            if p[i] == 0.0 && x < 0.0 {
+                continue;
+            }
+            let mut q = p.to_vec();
+            q[i] = x;
+            let g = eval(&q);
+            if !g.is_nan() {
+                let prec = g.prec().max(f.prec());
+                kappa = kappa.max(in_ulps(Float::with_val(prec, &g - &f), rounded, ty));
+            }
         }
     }
     kappa
@@ -411,7 +430,7 @@ pub fn measure(case: &Case, opts: Options) -> Measurement {
         let ill = case.name.ends_with(ILL_CONDITIONED);
         for (i, p) in pts.iter().enumerate() {
             let kappa = if ill {
-                condition(case.reference, ty, p).max(1.0)
+                condition(case.reference, ty, p, case.perturbed).max(1.0)
             } else {
                 1.0
             };

@@ -17,6 +17,8 @@ pub mod harness;
 pub mod points;
 pub mod reference;
 pub mod table;
+pub mod tonemap_cases;
+pub mod tonemap_ref;
 
 /// Base working precision of the references, in bits; each point adds twice the largest binary
 /// exponent of its arguments ([`harness::precision_for`]). Every reference is also evaluated

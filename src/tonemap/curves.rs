@@ -1,0 +1,732 @@
+//! The tone curves: exposure, the Reinhard family, the ACES fits, Hable, Lottes, Uchimura and
+//! Khronos PBR Neutral.
+
+use super::{per_channel, sanitize, sanitize_rgb, saturate_rgb};
+use crate::color::{self, ACES_HILL_INPUT, ACES_HILL_OUTPUT, luminance};
+use crate::domain::{any_nan3, nan_unless, nan_where};
+use crate::dw::{Dw, two_sum};
+use crate::error::{ParamError, require};
+use crate::real::Real;
+use crate::vec3::V3;
+
+/// True for f32 and its lanes (a 24-bit significand), where f64 arithmetic is exact enough.
+#[inline]
+fn single<T: Real>() -> bool {
+    let eps: f64 = T::EPSILON.lane(0).into();
+    eps > 1e-10
+}
+
+/// e^y - 1 without the cancellation of `exp(y) - 1` near y = 0: Kahan's trick (Kahan 2004,
+/// "A Logarithm Too Clever by Half"; Higham 2002, "Accuracy and Stability of Numerical
+/// Algorithms", 1.14.1): with u = fl(e^y), (u - 1) y / ln u, which divides out the rounding
+/// error of u (u - 1 is exact near 1); y itself where u rounds to 1, -1 where u - 1 rounds
+/// to -1 (u below half an ulp of 1, or 0), +inf where u overflows. NaN gives NaN.
+#[inline]
+fn expm1<T: Real>(y: T) -> T {
+    let u = y.exp();
+    let um1 = u - T::ONE;
+    let ratio = um1 * y / u.ln();
+    let v = T::select(um1.simd_eq(-T::ONE), -T::ONE, ratio);
+    let v = T::select(u.simd_eq(T::INFINITY), T::INFINITY, v);
+    T::select(u.simd_eq(T::ONE), y, v)
+}
+
+/// The exponential exposure curve T(c) = 1 - exp(-c * exposure). T(0) = 0, T(inf) = 1.
+/// `exposure` in (0, MAX] ([`super::Exposure`] builds one); 0, negative, +inf and NaN give NaN.
+/// Evaluated as -expm1(-c exposure) (Kahan's expm1), so a small c keeps its relative
+/// accuracy instead of losing it to the cancellation in 1 - exp(-c exposure).
+///
+/// Peers: none of three.js, Filament and bevy ships 1 - exp(-e c) as an operator (three.js's
+/// `LinearToneMapping` is saturate(e c); bevy uses 1 - exp(-x) only inside its
+/// `SomewhatBoringDisplayTransform`, which also desaturates).
+#[inline]
+#[must_use]
+pub fn exposure_curve<T: Real>(c: T, exposure: T) -> T {
+    let ok = exposure.simd_gt(T::ZERO) & exposure.simd_le(T::MAX);
+    nan_unless(ok, (-expm1(-sanitize(c) * exposure)).saturate())
+}
+
+/// Reinhard, Stark, Shirley, Ferwerda 2002, "Photographic Tone Reproduction for Digital
+/// Images", eq. 3 per channel: c / (1 + c).
+///
+/// Peers: three.js `ReinhardToneMapping` at `toneMappingExposure` e is `reinhard(e * c)` per
+/// channel; bevy `Tonemapping::Reinhard` is `reinhard` per channel. Filament ships none.
+#[inline]
+#[must_use]
+pub fn reinhard<T: Real>(c: T) -> T {
+    let c = sanitize(c);
+    (c / (T::ONE + c)).saturate()
+}
+
+/// Extended Reinhard (Reinhard et al. 2002, eq. 4) per channel with white point w:
+/// c (1 + c / w^2) / (1 + c), which reaches 1 at c = w (clamped beyond). w in (0, MAX]; 0,
+/// negative, +inf and NaN give NaN. c / w^2 is formed as (c / w) / w, so a subnormal w
+/// neither overflows w^2 to 0 nor forms 0 / 0 at c = 0.
+///
+/// Peers: none of three.js, Filament and bevy ships it. The paper applies eq. 4 to
+/// luminance: that is [`reinhard_extended_luminance`].
+#[inline]
+#[must_use]
+pub fn reinhard_extended<T: Real>(c: T, white: T) -> T {
+    let c = sanitize(c);
+    let ok = white.simd_gt(T::ZERO) & white.simd_le(T::MAX);
+    let v = (c * (T::ONE + c / white / white) / (T::ONE + c)).saturate();
+    nan_unless(ok, v)
+}
+
+/// Reinhard on luminance: L' = L / (1 + L), colour scaled by L' / L, i.e. c / (1 + L)
+/// (Reinhard et al. 2002, applied to luminance as the paper does). Keeps hue; channels are
+/// clamped to 1 (a saturated colour can exceed it).
+///
+/// Peers: bevy `Tonemapping::ReinhardLuminance` is `reinhard_luminance(c)` (bevy divides
+/// 0 / 0 at black, which gives 0 here). three.js and Filament ship none.
+#[inline]
+#[must_use]
+pub fn reinhard_luminance<T: Real>(c: V3<T>) -> V3<T> {
+    let c = sanitize_rgb(c);
+    let d = T::ONE + luminance(c);
+    saturate_rgb(per_channel(c, |x| x / d))
+}
+
+/// Extended Reinhard on luminance (Reinhard et al. 2002, eq. 4, applied to luminance):
+/// L' = L (1 + L / w^2) / (1 + L), colour scaled by L' / L = (1 + L / w^2) / (1 + L) (so a
+/// black colour stays black), channels clamped to [0, 1]. Keeps hue; a grey reaches 1 at
+/// L = w. w in (0, MAX]; 0, negative, +inf and NaN give NaN (in every channel), as does a NaN
+/// channel. L / w^2 is formed as (L / w) / w, as in [`reinhard_extended`].
+///
+/// Peers: none of three.js, Filament and bevy ships it.
+#[inline]
+#[must_use]
+pub fn reinhard_extended_luminance<T: Real>(c: V3<T>, white: T) -> V3<T> {
+    let c = sanitize_rgb(c);
+    let ok = white.simd_gt(T::ZERO) & white.simd_le(T::MAX);
+    let l = luminance(c);
+    let num = T::ONE + l / white / white;
+    let den = T::ONE + l;
+    per_channel(c, |x| nan_unless(ok, (x * num / den).saturate()))
+}
+
+/// Reinhard-Jodie: per-channel Reinhard blended toward luminance Reinhard by the per-channel
+/// result itself, lerp(c / (1 + L), c / (1 + c), c / (1 + c)) (the variant popularised by
+/// user Jodie on Shadertoy, 2019; see Reinhard et al. 2002 for both parts). The lerp's
+/// 1 - t is formed as 1 / (1 + c), which it equals, without the cancellation of 1 - t for a
+/// bright channel.
+///
+/// Peers: none of three.js, Filament and bevy ships it.
+#[inline]
+#[must_use]
+pub fn reinhard_jodie<T: Real>(c: V3<T>) -> V3<T> {
+    let c = sanitize_rgb(c);
+    let d = T::ONE + luminance(c);
+    let f = |x: T| {
+        let r = (T::ONE + x).recip();
+        let t = x * r;
+        (x / d).mul_add(r, t * t)
+    };
+    saturate_rgb(per_channel(c, f))
+}
+
+/// Narkowicz's fit of the ACES filmic curve (Narkowicz 2015, "ACES Filmic Tone Mapping
+/// Curve"): x (2.51 x + 0.03) / (x (2.43 x + 0.59) + 0.14), clamped to [0, 1]. It includes the
+/// RRT+ODT's brightening; Narkowicz scales input by 0.6 to match ACES' exposure (not applied
+/// here). f(0) = 0, f(1) = 0.8038.
+///
+/// Evaluated with numerator and denominator divided by 0.14 (so the denominator's constant
+/// term is an exact 1, and each coefficient, a ratio of two decimals, is rounded once). Above
+/// x = 1 (f > 0.78) the fraction is its polynomial quotient minus the remainder,
+/// A - ((0.59 A - 0.03) x + 0.14 A) / (x (2.43 x + 0.59) + 0.14) with A = 2.51 / 2.43 carried
+/// in two parts: the remainder is under a quarter of the result there, so its roundings
+/// count a quarter.
+///
+/// Peers: Narkowicz's `ACESFilm(x)` is `aces_narkowicz(x)`, his ACES-exposure form
+/// `aces_narkowicz(0.6 * x)`. Filament's `FilmicToneMapper` is the same curve without the
+/// clamp: on linear sRGB (Filament's legacy `ToneMapping::FILMIC` path) it is
+/// `aces_narkowicz` per channel; through `ColorGrading` Filament applies it to Rec.2020 values
+/// and clamps only after converting back, which differs by up to 0.013 where a Rec.2020 channel
+/// passes 7.24 (the curve rises to 1.033 there). three.js and bevy do not ship it.
+#[inline]
+#[must_use]
+pub fn aces_narkowicz<T: Real>(c: T) -> T {
+    let x = sanitize(c);
+    let s = |v: f64| T::splat(v);
+    // 2.43 / 0.14, 0.59 / 0.14, 2.51 / 0.14, 0.03 / 0.14 and (0.59 A - 0.03) / 0.14, each the
+    // nearest f64 to the exact ratio.
+    let den = x.mul_add(
+        x.mul_add(s(17.357_142_857_142_858), s(4.214_285_714_285_714)),
+        T::ONE,
+    );
+    let big = x.simd_gt(T::ONE);
+    let a = Dw::<T>::constant(1.032_921_810_699_588_5, -7.218_734_069_579_208e-17);
+    let num = T::select(
+        big,
+        x.mul_add(s(4.138_741_916_519_694), a.hi),
+        x * x.mul_add(s(17.928_571_428_571_427), s(0.214_285_714_285_714_27)),
+    );
+    let q = num / den;
+    T::select(big, (a.hi - q) + a.lo, q).saturate()
+}
+
+/// The tails (exact decimal minus its nearest f64) of [`ACES_HILL_INPUT`]'s entries.
+const HILL_INPUT_TAIL: [[f64; 3]; 3] = [
+    [
+        1.385_558_334_732_195_3e-18,
+        -6.288_303_211_476_887e-18,
+        -2.036_149_027_162_537e-18,
+    ],
+    [
+        1.887_379_141_862_766_3e-18,
+        -3.627_320_666_055_311_6e-17,
+        -3.086_420_008_457_935e-19,
+    ],
+    [
+        -1.632_027_846_198_98e-18,
+        -4.511_946_372_076_636_5e-18,
+        -1.467_270_749_344_607e-17,
+    ],
+];
+
+/// The tails of [`ACES_HILL_OUTPUT`]'s entries.
+const HILL_OUTPUT_TAIL: [[f64; 3]; 3] = [
+    [
+        1.012_523_398_458_142_8e-16,
+        -3.481_659_405_224_491e-18,
+        -6.261_657_858_885_883e-19,
+    ],
+    [
+        4.067_857_162_226_573_4e-18,
+        -5.940_137_270_954_437e-17,
+        -1.776_356_839_400_250_5e-19,
+    ],
+    [
+        -9.672_818_102_046_676e-20,
+        5.226_929_999_935_237e-18,
+        2.351_896_455_365_931_6e-17,
+    ],
+];
+
+/// A decimal matrix (nearest f64 plus tail) times a double-word colour, in double words.
+#[inline]
+fn mul_dw<T: Real>(m: &color::Mat3, tail: &[[f64; 3]; 3], c: [Dw<T>; 3]) -> [Dw<T>; 3] {
+    core::array::from_fn(|i| {
+        let k = |j: usize| Dw::<T>::constant(m[i][j], tail[i][j]);
+        k(0).mul(c[0]).add(k(1).mul(c[1])).add(k(2).mul(c[2]))
+    })
+}
+
+/// Hill's rational fit of the ACES RRT + ODT tone curve in the fit's working space:
+/// (v (v + 0.0245786) - 0.000090537) / (v (0.983729 v + 0.4329510) + 0.238081), in double
+/// words with the decimal constants to twice the working precision.
+#[inline]
+fn rrt_odt_fit<T: Real>(v: Dw<T>) -> Dw<T> {
+    let k = |hi: f64, tail: f64| Dw::<T>::constant(hi, tail);
+    let a = v
+        .mul(v.add(k(0.024_578_6, 9.404_921_286_204_626e-19)))
+        .add(k(-9.0537e-5, 4.084_309_279_672_737e-21));
+    let b = v
+        .mul(
+            k(0.983_729, 3.543_476_623_235_62e-17)
+                .mul(v)
+                .add(k(0.432_951, 2.524_558_340_155_636e-17)),
+        )
+        .add(k(0.238_081, 1.291_766_693_611_862_1e-17));
+    a.div(b)
+}
+
+/// ACES RRT + sRGB ODT as fitted by Stephen Hill (2016, `ACESFitted.hlsl`, used in MJP's
+/// BakingLab): [`ACES_HILL_INPUT`], the rational tone curve per channel, [`ACES_HILL_OUTPUT`],
+/// clamped to [0, 1]. Toe: the curve is -0.00038 at 0, so black stays black after the clamp.
+///
+/// The fit's numerator has a root (v = 0.00337) and the output matrix has negative entries, so
+/// dark colours cancel twice; the whole chain runs in double words (about twice the lane
+/// type's precision) with the published decimal constants to that precision, and is rounded
+/// once at the end (f32 lanes: in f64, then rounded once).
+///
+/// Peers: three.js `ACESFilmicToneMapping` at exposure e is `aces_hill(c * e / 0.6)` (three.js
+/// brightens by 1/0.6; without it the two differ by up to 0.28); bevy `Tonemapping::AcesFitted`
+/// is `aces_hill(c)`. Filament's `ACESToneMapper` and `ACESLegacyToneMapper` run the full
+/// RRT + ODT, a different curve.
+#[inline]
+#[must_use]
+pub fn aces_hill<T: Real>(c: V3<T>) -> V3<T> {
+    let c = sanitize_rgb(c);
+    if single::<T>() {
+        // f32 lanes: plain f64 is twice their precision and cheaper than double words.
+        return per_lane_rgb(c, |v| {
+            let v = color::mul(&ACES_HILL_INPUT, v);
+            let fit = |v: f64| {
+                (v * (v + 0.024_578_6) - 0.000_090_537)
+                    / (v * (0.983_729 * v + 0.432_951) + 0.238_081)
+            };
+            saturate_rgb(color::mul(&ACES_HILL_OUTPUT, per_channel(v, fit)))
+        });
+    }
+    let v = mul_dw(
+        &ACES_HILL_INPUT,
+        &HILL_INPUT_TAIL,
+        [Dw::exact(c.x), Dw::exact(c.y), Dw::exact(c.z)],
+    );
+    let f = v.map(rrt_odt_fit);
+    let o = mul_dw(&ACES_HILL_OUTPUT, &HILL_OUTPUT_TAIL, f);
+    saturate_rgb(V3::new(o[0].value(), o[1].value(), o[2].value()))
+}
+
+/// Parameters of Hable's filmic curve F(x) = (x (A x + C B) + D E) / (x (A x + B) + D F) - E / F,
+/// applied as F(bias x) / F(W).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct HableParams {
+    /// Shoulder strength A.
+    pub a: f64,
+    /// Linear strength B.
+    pub b: f64,
+    /// Linear angle C.
+    pub c: f64,
+    /// Toe strength D.
+    pub d: f64,
+    /// Toe numerator E.
+    pub e: f64,
+    /// Toe denominator F.
+    pub f: f64,
+    /// Linear white point W.
+    pub white: f64,
+    /// Exposure bias applied to the input.
+    pub exposure_bias: f64,
+}
+
+impl HableParams {
+    /// The Uncharted 2 values (Hable 2010, "Filmic Tonemapping Operators"): A = 0.15,
+    /// B = 0.50, C = 0.10, D = 0.20, E = 0.02, F = 0.30, W = 11.2, exposure bias 2.
+    pub const UNCHARTED2: Self = Self {
+        a: 0.15,
+        b: 0.50,
+        c: 0.10,
+        d: 0.20,
+        e: 0.02,
+        f: 0.30,
+        white: 11.2,
+        exposure_bias: 2.0,
+    };
+
+    /// Validated parameters: all finite and > 0 (the curve then rises from F(0) = 0).
+    #[allow(clippy::too_many_arguments)]
+    pub fn new(
+        a: f64,
+        b: f64,
+        c: f64,
+        d: f64,
+        e: f64,
+        f: f64,
+        white: f64,
+        exposure_bias: f64,
+    ) -> Result<Self, ParamError> {
+        for (name, v) in [
+            ("a", a),
+            ("b", b),
+            ("c", c),
+            ("d", d),
+            ("e", e),
+            ("f", f),
+            ("white", white),
+            ("exposure_bias", exposure_bias),
+        ] {
+            require::<f64>(v > 0.0 && v.is_finite(), name, "finite and > 0")?;
+        }
+        Ok(Self {
+            a,
+            b,
+            c,
+            d,
+            e,
+            f,
+            white,
+            exposure_bias,
+        })
+    }
+
+    /// True when every field is finite and > 0, the domain [`HableParams::new`] enforces.
+    fn is_valid(&self) -> bool {
+        [
+            self.a,
+            self.b,
+            self.c,
+            self.d,
+            self.e,
+            self.f,
+            self.white,
+            self.exposure_bias,
+        ]
+        .iter()
+        .all(|v| *v > 0.0 && v.is_finite())
+    }
+
+    /// F(x) in double-word f64 arithmetic, as one fraction (see [`hable`]).
+    fn curve_dw(&self, x: Dw<f64>) -> Dw<f64> {
+        let [p, q, r, s, t] = self.coefficients();
+        let num = x.mul(p.mul(x).add(q));
+        let den = r.mul(x).add(s).mul(x).add(t);
+        num.div(den)
+    }
+
+    /// The one-fraction coefficients of F(x) = x (P x + Q) / (R x^2 + S x + T): P = (F - E) A,
+    /// Q = B (F C - E), R = F A, S = F B, T = D F^2, in double words.
+    fn coefficients(&self) -> [Dw<f64>; 5] {
+        let k = Dw::exact;
+        let (a, b, c, d, e, f) = (
+            k(self.a),
+            k(self.b),
+            k(self.c),
+            k(self.d),
+            k(self.e),
+            k(self.f),
+        );
+        [
+            f.add(e.neg()).mul(a),
+            b.mul(f.mul(c).add(e.neg())),
+            f.mul(a),
+            f.mul(b),
+            d.mul(f).mul(f),
+        ]
+    }
+}
+
+/// Hable's filmic curve ("Uncharted 2"; Hable 2010, "Filmic Tonemapping Operators") per
+/// channel: F(bias c) / F(W), clamped to [0, 1], with
+/// F(x) = (x (A x + C B) + D E) / (x (A x + B) + D F) - E / F. F(0) = 0. Parameters outside
+/// [`HableParams::new`]'s domain (a struct built by hand) give NaN.
+///
+/// F's two terms cancel for small x (F(x) is about x B (F C - E) / (D F^2) there, while
+/// each term is about E / F); over one denominator the cancellation is exact:
+/// F(x) = x ((F - E) A x + B (F C - E)) / (F (x (A x + B) + D F)). The coefficients of
+/// F(bias c) / F(W), with the bias and 1 / F(W) folded in, are formed once per call in
+/// double-word f64 (plain f64 for f32 lanes) and rounded once each to the lane type.
+///
+/// Peers: Hable's post's shader (`texColor *= 16`, ExposureBias 2, W = 11.2, then
+/// pow(1/2.2)) is `gamma_encode(hable(16 * c, &HableParams::UNCHARTED2), 2.2)`: the 16 is a
+/// pre-exposure for the post's image and the 1/2.2 a display encoding, neither part of the
+/// curve. None of three.js, Filament and bevy ships it.
+#[inline]
+#[must_use]
+pub fn hable<T: Real>(c: T, p: &HableParams) -> T {
+    if !p.is_valid() {
+        return T::splat(f64::NAN);
+    }
+    // F(b x) / K = x (P b^2 x + Q b) / (K (R b^2 x^2 + S b x + T)); on f32 lanes plain f64
+    // coefficients are exact enough (their few f64 roundings are far below an f32 ulp).
+    let [np, nq, dr, ds, dt] = if single::<T>() {
+        let (a, b, c, d, e, f) = (p.a, p.b, p.c, p.d, p.e, p.f);
+        let (cp, cq, cr, cs, ct) = ((f - e) * a, b * (f * c - e), f * a, f * b, d * f * f);
+        let w = p.white;
+        let k = w * (cp * w + cq) / ((cr * w + cs) * w + ct);
+        let bias = p.exposure_bias;
+        let b2 = bias * bias;
+        [cp * b2, cq * bias, cr * b2 * k, cs * bias * k, ct * k].map(T::splat)
+    } else {
+        let k = p.curve_dw(Dw::exact(p.white));
+        let bias = Dw::exact(p.exposure_bias);
+        let [cp, cq, cr, cs, ct] = p.coefficients();
+        let b2 = bias.sq();
+        [
+            cp.mul(b2),
+            cq.mul(bias),
+            cr.mul(b2).mul(k),
+            cs.mul(bias).mul(k),
+            ct.mul(k),
+        ]
+        .map(|v| T::splat(v.value()))
+    };
+    let x = sanitize(c);
+    let num = x * x.mul_add(np, nq);
+    let den = x.mul_add(x.mul_add(dr, ds), dt);
+    (num / den).saturate()
+}
+
+/// Parameters of Lottes' curve x^a / (x^(a d) b + c) (b and c derived).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct LottesParams {
+    /// Contrast a (the toe's power).
+    pub contrast: f64,
+    /// Shoulder d.
+    pub shoulder: f64,
+    /// Input mapped to white.
+    pub hdr_max: f64,
+    /// Mid-grey input.
+    pub mid_in: f64,
+    /// Mid-grey output.
+    pub mid_out: f64,
+    b: f64,
+    c: f64,
+}
+
+impl LottesParams {
+    /// Lottes' defaults from the talk: contrast 1.6, shoulder 0.977, hdr_max 8, mid 0.18 ->
+    /// 0.267.
+    #[must_use]
+    pub fn default_curve() -> Self {
+        Self::derive(1.6, 0.977, 8.0, 0.18, 0.267)
+    }
+
+    /// Validated parameters: all finite and > 0, mid_in < hdr_max, mid_out < 1.
+    pub fn new(
+        contrast: f64,
+        shoulder: f64,
+        hdr_max: f64,
+        mid_in: f64,
+        mid_out: f64,
+    ) -> Result<Self, ParamError> {
+        for (name, v) in [
+            ("contrast", contrast),
+            ("shoulder", shoulder),
+            ("hdr_max", hdr_max),
+            ("mid_in", mid_in),
+            ("mid_out", mid_out),
+        ] {
+            require::<f64>(v > 0.0 && v.is_finite(), name, "finite and > 0")?;
+        }
+        require::<f64>(mid_in < hdr_max, "mid_in", "below hdr_max")?;
+        require::<f64>(mid_out < 1.0, "mid_out", "below 1")?;
+        Ok(Self::derive(contrast, shoulder, hdr_max, mid_in, mid_out))
+    }
+
+    /// True when the public fields are in [`LottesParams::new`]'s domain and b, c are finite.
+    fn is_valid(&self) -> bool {
+        let pos = |v: f64| v > 0.0 && v.is_finite();
+        pos(self.contrast)
+            && pos(self.shoulder)
+            && pos(self.hdr_max)
+            && pos(self.mid_in)
+            && pos(self.mid_out)
+            && self.mid_in < self.hdr_max
+            && self.mid_out < 1.0
+            && self.b.is_finite()
+            && self.c.is_finite()
+    }
+
+    /// b and c solve f(mid_in) = mid_out and f(hdr_max) = 1 (Lottes 2016, slide "Generic
+    /// Tonemapper").
+    fn derive(a: f64, d: f64, hdr_max: f64, mid_in: f64, mid_out: f64) -> Self {
+        let ad = a * d;
+        let (mi_a, mi_ad) = (libm::pow(mid_in, a), libm::pow(mid_in, ad));
+        let (hm_a, hm_ad) = (libm::pow(hdr_max, a), libm::pow(hdr_max, ad));
+        let den = (hm_ad - mi_ad) * mid_out;
+        let b = (-mi_a + hm_a * mid_out) / den;
+        let c = (hm_ad * mi_a - hm_a * mi_ad * mid_out) / den;
+        Self {
+            contrast: a,
+            shoulder: d,
+            hdr_max,
+            mid_in,
+            mid_out,
+            b,
+            c,
+        }
+    }
+}
+
+/// `f` applied to each lane of `x` in f64 arithmetic, rounded back to the lane type once:
+/// for the curves whose every lane calls `pow` (scalar per lane on every lane type anyway),
+/// so that f32 lanes see f64 exponents (a decimal exponent such as 1.33 rounded to f32 would
+/// move x^1.33 by 1.33 ln(x) times its rounding, many ulps for a tiny x).
+#[inline]
+fn per_lane_f64<T: Real>(x: T, f: impl Fn(f64) -> f64) -> T {
+    T::from_fn(|i| <T::Scalar as Real>::splat(f(x.lane(i).into())))
+}
+
+/// `f` applied to each lane's colour in f64 arithmetic, rounded back to the lane type once.
+#[inline]
+fn per_lane_rgb<T: Real>(c: V3<T>, f: impl Fn(V3<f64>) -> V3<f64>) -> V3<T> {
+    let mut out = [V3::new(0.0, 0.0, 0.0); 8];
+    // No lane type has more than 8 lanes.
+    for (i, o) in out.iter_mut().enumerate().take(T::LANES) {
+        *o = f(V3::new(
+            c.x.lane(i).into(),
+            c.y.lane(i).into(),
+            c.z.lane(i).into(),
+        ));
+    }
+    let ch = |g: fn(&V3<f64>) -> f64| T::from_fn(|i| <T::Scalar as Real>::splat(g(&out[i])));
+    V3::new(ch(|v| v.x), ch(|v| v.y), ch(|v| v.z))
+}
+
+/// Lottes' curve (Lottes 2016, "Advanced Techniques and Optimization of HDR Color Pipelines",
+/// GDC) per channel: x^a / (x^(a d) b + c), clamped to [0, 1]. Passes through
+/// (mid_in, mid_out) and (hdr_max, 1). Parameters outside [`LottesParams::new`]'s domain (a
+/// public field changed by hand) give NaN. Evaluated in f64 on every lane type (a decimal
+/// exponent such as 1.6 rounded to f32 would move x^1.6 by 1.6 ln(x) times its rounding), so
+/// f32 results are rounded once.
+///
+/// Peers: Filament's `GenericToneMapper(contrast, midGrayIn, midGrayOut, hdrMax)` (defaults
+/// 1.55, 0.18, 0.215, 10) is Lottes' curve with shoulder 1: per channel,
+/// `lottes(x, &LottesParams::new(contrast, 1.0, hdrMax, midGrayIn, midGrayOut)?)` (Filament
+/// applies it to Rec.2020 values and clamps only after converting back to sRGB).
+/// three.js and bevy do not ship it.
+#[inline]
+#[must_use]
+pub fn lottes<T: Real>(c: T, p: &LottesParams) -> T {
+    if !p.is_valid() {
+        return T::splat(f64::NAN);
+    }
+    let (a, ad, b, cc) = (p.contrast, p.contrast * p.shoulder, p.b, p.c);
+    per_lane_f64(sanitize(c), |x| {
+        let v = libm::pow(x, a) / (libm::pow(x, ad) * b + cc);
+        Real::saturate(v)
+    })
+}
+
+/// Parameters of Uchimura's curve.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct UchimuraParams {
+    /// Maximum display brightness P.
+    pub max_brightness: f64,
+    /// Contrast a.
+    pub contrast: f64,
+    /// Start of the linear section m.
+    pub linear_start: f64,
+    /// Length of the linear section l.
+    pub linear_length: f64,
+    /// Black tightness c.
+    pub black: f64,
+    /// Pedestal b.
+    pub pedestal: f64,
+}
+
+impl UchimuraParams {
+    /// The Gran Turismo Sport defaults: P = 1, a = 1, m = 0.22, l = 0.4, c = 1.33, b = 0.
+    pub const GRAN_TURISMO: Self = Self {
+        max_brightness: 1.0,
+        contrast: 1.0,
+        linear_start: 0.22,
+        linear_length: 0.4,
+        black: 1.33,
+        pedestal: 0.0,
+    };
+
+    /// True when every field is finite, P, a, m and c are > 0, l >= 0, and the linear
+    /// section ends below P (S1 = m + a l0 < P with l0 = (P - m) l / a, else the shoulder
+    /// divides by P - S1 <= 0; the names are those of Uchimura 2017).
+    fn is_valid(&self) -> bool {
+        let all_finite = [
+            self.max_brightness,
+            self.contrast,
+            self.linear_start,
+            self.linear_length,
+            self.black,
+            self.pedestal,
+        ]
+        .iter()
+        .all(|v| v.is_finite());
+        let (pm, a, m, l) = (
+            self.max_brightness,
+            self.contrast,
+            self.linear_start,
+            self.linear_length,
+        );
+        let s1 = m + a * ((pm - m) * l / a);
+        all_finite && pm > 0.0 && a > 0.0 && m > 0.0 && l >= 0.0 && self.black > 0.0 && s1 < pm
+    }
+}
+
+/// Uchimura's "GT" curve (Uchimura 2017, "HDR Theory and Practice", CEDEC): a power toe
+/// m (x/m)^c + b, a linear section m + a (x - m), and an exponential shoulder
+/// P - (P - S1) exp(-a P / (P - S1) (x - S0) / P), blended by smoothstep(0, m, x) and a step at
+/// S0 = m + l0, where l0 = (P - m) l / a is the linear section's length in x and
+/// S1 = m + a l0 its end value (the talk's notation). Per channel, clamped to [0, 1].
+/// f(0) = b. Parameters: every field finite, P, a, m, c > 0, l >= 0 and m + a l0 < P (the Gran
+/// Turismo values qualify); others give NaN. Evaluated in f64 on every lane type (its toe
+/// raises x / m to a decimal power), so f32 results are rounded once.
+///
+/// Peers: the shader transcription in wide use (dmnsgn's `glsl-tone-map`) with the Gran
+/// Turismo values is `uchimura(x, &UchimuraParams::GRAN_TURISMO)`. None of three.js, Filament
+/// and bevy ships it (Filament's GT7 tone mapper is a different, 2025 curve).
+#[inline]
+#[must_use]
+pub fn uchimura<T: Real>(c: T, p: &UchimuraParams) -> T {
+    if !p.is_valid() {
+        return T::splat(f64::NAN);
+    }
+    let (pm, a, m, l, cc, b) = (
+        p.max_brightness,
+        p.contrast,
+        p.linear_start,
+        p.linear_length,
+        p.black,
+        p.pedestal,
+    );
+    let l0 = (pm - m) * l / a;
+    let s0 = m + l0;
+    let s1 = m + a * l0;
+    let cp = -(a * pm / (pm - s1)) / pm;
+    per_lane_f64(sanitize(c), |x| {
+        let t = Real::saturate(x / m);
+        // smoothstep(0, m, x); w1 = 1 - w0 - w2 is formed as smooth - w2, which it equals,
+        // without the cancellation of 1 - (1 - smooth) for small x.
+        let smooth = t * t * (3.0 - 2.0 * t);
+        let w0 = 1.0 - smooth;
+        let w2 = if x >= s0 { 1.0 } else { 0.0 };
+        let w1 = smooth - w2;
+        let toe = m * libm::pow(x / m, cc) + b;
+        let shoulder = pm - (pm - s1) * libm::exp(cp * (x - s0));
+        let linear = a * (x - m) + m;
+        Real::saturate(toe * w0 + linear * w1 + shoulder * w2)
+    })
+}
+
+/// Khronos PBR Neutral (Khronos Group 2024, "PBR Neutral Tone Mapper" specification): an
+/// offset f of the darkest channel (x - x^2 / 0.16 below 0.08, else 0.04), identity below
+/// the compression start Ks = 0.76, then a peak compression p_n = 1 - (1 - Ks)^2 / (p + 1 -
+/// 2 Ks) with desaturation g = 1 / (0.15 (p - p_n) + 1), a mix toward (p_n, p_n, p_n). Keeps base colours up to
+/// 0.76 exact (minus the offset), which is its purpose for product rendering.
+///
+/// Evaluated without the specification's cancellations, each an identity: a channel minus
+/// the offset is (c - x) + 6.25 x^2 below 0.08 (the darkest channel's own c - x is 0, its
+/// result 6.25 x^2); p - p_n = (p - Ks)^2 / (p - Ks + d) with d = 1 - Ks; and the output
+/// mix(c p_n / p, p_n, 1 - g) is p_n (c / p + h) / (1 + h) with h = 0.15 (p - p_n), so no
+/// 1 - g is formed. Ks = 0.76 is carried in two parts, so p - Ks is exact near Ks.
+///
+/// Peers: the Khronos reference `pbrNeutral.glsl`, three.js `NeutralToneMapping` at exposure
+/// e as `pbr_neutral(e * c)`, and bevy `Tonemapping::PbrNeutral` are this function. Older
+/// Filament releases' `PBRNeutralToneMapper` mixes toward white instead of toward the
+/// compressed peak, as the specification's first draft did: up to 5.5e-3 apart.
+#[inline]
+#[must_use]
+pub fn pbr_neutral<T: Real>(c: V3<T>) -> V3<T> {
+    let c = sanitize_rgb(c);
+    let s = |v: f64| T::splat(v);
+    let x = c.x.min(c.y).min(c.z);
+    let low = x.simd_lt(s(0.08));
+    let x2 = s(6.25) * x * x;
+    // Each channel minus the offset as a double word: exact c - x plus 6.25 x^2 below 0.08,
+    // c - 0.04 above (exact but for 0.04's own rounding, far below the result's last place).
+    let off = |v: T| {
+        let (d, e) = two_sum(v, -x);
+        let lo = Dw::sum(d, e + x2);
+        let hi = Dw::sum(v, -s(0.04));
+        Dw::select(low, lo, hi)
+    };
+    let (cx, cy, cz) = (off(c.x), off(c.y), off(c.z));
+    let c = V3::new(cx.hi, cy.hi, cz.hi);
+    let peak = c.x.max(c.y).max(c.z);
+    let peak_lo = T::select(
+        peak.simd_eq(cx.hi),
+        cx.lo,
+        T::select(peak.simd_eq(cy.hi), cy.lo, cz.lo),
+    );
+    // Ks = 0.8 - 0.04 = 0.76 as hi + lo (0.76 = fl64(0.76) - 8.88e-18); peak - hi is exact
+    // (Sterbenz) near Ks, so e = p - Ks keeps the peak's low part.
+    let ks = Dw::<T>::constant(0.76, -8.881_784_197_001_253e-18);
+    let e = (peak - ks.hi) + (peak_lo - ks.lo);
+    let d = s(0.24);
+    let t = e + d;
+    let new_peak = T::ONE - s(0.0576) / t;
+    let h = s(0.15) * (e * e / t);
+    let safe_peak = T::select(peak.simd_gt(T::ZERO), peak, T::ONE);
+    let scaled = per_channel(c, |v| new_peak * (v / safe_peak + h) / (T::ONE + h));
+    let compress = e.simd_ge(T::ZERO);
+    let out = saturate_rgb(V3::select(compress, scaled, c));
+    // The offset and the peak mix the channels, but `min`/`max` ignore a NaN argument: without
+    // this a NaN in one channel would leave the other two plausible.
+    let bad = any_nan3(c);
+    V3::new(
+        nan_where(bad, out.x),
+        nan_where(bad, out.y),
+        nan_where(bad, out.z),
+    )
+}
