@@ -1,7 +1,8 @@
 //! The main job: prints the crate's report (the integrators on known integrals, the lane paths
 //! against scalar, NDF normalization, Smith's weak furnace, the Cook-Torrance energy loss, the
 //! approximations' errors, the tonemapping operators, the diffuse lobes' albedo, the Phong
-//! comparison, the metallic-roughness white furnace, the light falloffs) and writes its images to `out/`:
+//! comparison, the metallic-roughness white furnace, the light falloffs, image-based lighting
+//! and multiple-scattering compensation) and writes its images to `out/`:
 //!
 //! - `out/spheres.png`: Cook-Torrance GGX spheres, roughness 0.05 to 1, a dielectric (eta 1.5
 //!   over a red Lambertian base) and gold, rendered eight pixels at a time on `f32x8` lanes,
@@ -11,6 +12,8 @@
 //!
 //! Run: `cargo run --release --example report`.
 
+#[path = "report_sections/ibl.rs"]
+mod ibl_section;
 #[path = "report_sections/lobes.rs"]
 mod lobes;
 #[path = "report_sections/tonemap.rs"]
@@ -411,7 +414,8 @@ fn curves_image() -> Image {
             img.set(x, y, [200, 200, 200]);
         }
     }
-    let palette: [[u8; 3]; 14] = [
+    // One colour per operator (cycled if the list grows past it).
+    let palette: [[u8; 3]; 19] = [
         [31, 119, 180],
         [255, 127, 14],
         [44, 160, 44],
@@ -426,6 +430,11 @@ fn curves_image() -> Image {
         [90, 60, 0],
         [200, 0, 90],
         [0, 90, 200],
+        [255, 187, 120],
+        [152, 223, 138],
+        [255, 152, 150],
+        [197, 176, 213],
+        [196, 156, 148],
     ];
     for (k, op) in Operator::all().iter().enumerate() {
         let mut prev: Option<usize> = None;
@@ -438,7 +447,7 @@ fn curves_image() -> Image {
                 None => (y, y),
             };
             for yy in lo..=hi {
-                img.set(x, yy, palette[k]);
+                img.set(x, yy, palette[k % palette.len()]);
             }
             prev = Some(y);
         }
@@ -468,6 +477,9 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     lobes::phong_comparison()?;
     lobes::material_furnace()?;
     lobes::light_falloffs();
+    ibl_section::dfg_section();
+    ibl_section::irradiance_section();
+    ibl_section::energy_section();
     let out = Path::new("out");
     std::fs::create_dir_all(out)?;
     render_spheres().save(&out.join("spheres.png"))?;

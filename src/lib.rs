@@ -62,6 +62,7 @@
 //! | `tonemap` | tonemapping operators, exposure | `tonemap` |
 //! | `color` | sRGB / Rec.709 transfer, luminance, colour matrices | `tonemap` |
 //! | `integrate` | hemisphere integrators: albedo, NDF area, weak furnace, reciprocity | `integrate` |
+//! | `ibl` | split-sum DFG table and fits, prefilter samples, irradiance (quadrature, SH9), multiple-scattering energy compensation | `ibl` |
 //!
 //! ## Bad input: one rule for every function
 //! Every public kernel keeps the same rule, on `f32`, `f64`, `f32x8` and `f64x4` alike
@@ -118,6 +119,8 @@ mod dw;
 pub mod fresnel;
 #[cfg(feature = "ggx")]
 pub mod ggx;
+#[cfg(feature = "ibl")]
+pub mod ibl;
 #[cfg(feature = "integrate")]
 pub mod integrate;
 #[cfg(feature = "lights")]

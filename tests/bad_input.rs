@@ -189,7 +189,238 @@ fn table<T: Real>() -> Vec<Kernel<T>> {
     material_rows(&mut t);
     #[cfg(feature = "lights")]
     lights_rows(&mut t);
+    #[cfg(feature = "ibl")]
+    ibl_rows(&mut t);
     t
+}
+
+/// `ibl::dfg` and `ibl::energy` (`ibl::irradiance` and `ibl::prefilter` below them).
+#[cfg(feature = "ibl")]
+fn ibl_rows<T: Real>(t: &mut Vec<Kernel<T>>) {
+    use brdf::ibl::{dfg, energy, irradiance, prefilter};
+    let fit_args = || vec![c("n_dot_v", 0.8), p("roughness", 0.3, &UNIT_BAD)];
+    type Fit2<T> = fn(T, T) -> [T; 2];
+    for (name, f) in [
+        ("ibl::dfg::karis_mobile", dfg::karis_mobile::<T> as Fit2<T>),
+        ("ibl::dfg::lazarov", dfg::lazarov::<T>),
+        ("ibl::dfg::narkowicz_lazarov", dfg::narkowicz_lazarov::<T>),
+        (
+            "ibl::dfg::narkowicz_polynomial",
+            dfg::narkowicz_polynomial::<T>,
+        ),
+    ] {
+        t.push(k(name, fit_args(), move |x| f(x[0], x[1]).to_vec()));
+    }
+    t.push(k("ibl::dfg::karis_mobile_nonmetal", fit_args(), |x| {
+        vec![dfg::karis_mobile_nonmetal(x[0], x[1])]
+    }));
+    t.push(
+        k(
+            "ibl::dfg::specular",
+            vec![
+                rgb("prefiltered", [0.5, 1.0, 2.0], &[-1.0, -INF]),
+                rgb("f0", [0.04, 0.5, 0.9], &UNIT_BAD),
+                p("f90", 1.0, &UNIT_BAD),
+                c("a", 0.8),
+                c("b", 0.1),
+            ],
+            |x| o3(dfg::specular(v3(x, 0), v3(x, 3), x[6], x[7], x[8])),
+        )
+        .dep("prefiltered.x", &[0])
+        .dep("prefiltered.y", &[1])
+        .dep("prefiltered.z", &[2])
+        .dep("f0.x", &[0])
+        .dep("f0.y", &[1])
+        .dep("f0.z", &[2]),
+    );
+    type Map2<T> = fn(T, T) -> T;
+    let maps: [(&str, Map2<T>, Vec<Vec<Arg>>); 6] = [
+        (
+            "ibl::dfg::mip_from_roughness_linear",
+            dfg::mip_from_roughness_linear::<T>,
+            vec![
+                p("roughness", 0.5, &UNIT_BAD),
+                p("n_mips", 5.0, &[0.5, INF, -INF]),
+            ],
+        ),
+        (
+            "ibl::dfg::roughness_from_mip_linear",
+            dfg::roughness_from_mip_linear::<T>,
+            vec![
+                p("mip", 2.0, &[-1.0, 9.0, INF]),
+                p("n_mips", 5.0, &[1.0, INF, -INF]),
+            ],
+        ),
+        (
+            "ibl::dfg::lod_from_roughness_filament",
+            dfg::lod_from_roughness_filament::<T>,
+            vec![
+                p("roughness", 0.5, &UNIT_BAD),
+                p("roughness_one_level", 4.0, &[-1.0, INF]),
+            ],
+        ),
+        (
+            "ibl::dfg::roughness_from_lod_filament",
+            dfg::roughness_from_lod_filament::<T>,
+            vec![
+                p("lod", 2.0, &[-1.0, 6.0, INF]),
+                p("roughness_one_level", 4.0, &[0.0, -1.0, INF]),
+            ],
+        ),
+        (
+            "ibl::dfg::mip_from_roughness_ue4",
+            dfg::mip_from_roughness_ue4::<T>,
+            vec![
+                p("roughness", 0.5, &UNIT_BAD),
+                p("cubemap_max_mip", 7.0, &[INF, -INF]),
+            ],
+        ),
+        (
+            "ibl::dfg::roughness_from_mip_ue4",
+            dfg::roughness_from_mip_ue4::<T>,
+            vec![
+                p("mip", 2.0, &[INF, -INF]),
+                p("cubemap_max_mip", 7.0, &[INF, -INF]),
+            ],
+        ),
+    ];
+    for (name, f, args) in maps {
+        t.push(k(name, args, move |x| vec![f(x[0], x[1])]));
+    }
+
+    t.push(k(
+        "ibl::energy::e_ggx",
+        vec![c("mu", 0.5), p("alpha", 0.3, &ALPHA_BAD)],
+        |x| vec![energy::e_ggx(x[0], x[1])],
+    ));
+    t.push(k(
+        "ibl::energy::e_avg_ggx",
+        vec![p("alpha", 0.3, &ALPHA_BAD)],
+        |x| vec![energy::e_avg_ggx(x[0])],
+    ));
+    t.push(k(
+        "ibl::energy::kulla_conty_lobe",
+        vec![
+            p("e_o", 0.8, &UNIT_BAD),
+            p("e_i", 0.7, &UNIT_BAD),
+            p("e_avg", 0.6, &UNIT_BAD),
+        ],
+        |x| vec![energy::kulla_conty_lobe(x[0], x[1], x[2])],
+    ));
+    t.push(k(
+        "ibl::energy::kulla_conty_fresnel",
+        vec![p("f_avg", 0.5, &UNIT_BAD), p("e_avg", 0.6, &UNIT_BAD)],
+        |x| vec![energy::kulla_conty_fresnel(x[0], x[1])],
+    ));
+    t.push(k(
+        "ibl::energy::fresnel_avg_schlick",
+        vec![p("f0", 0.04, &UNIT_BAD), p("f90", 1.0, &UNIT_BAD)],
+        |x| vec![energy::fresnel_avg_schlick(x[0], x[1])],
+    ));
+    t.push(k(
+        "ibl::energy::kulla_conty_ggx",
+        vec![
+            c("n_dot_v", 0.8),
+            c("n_dot_l", 0.6),
+            p("alpha", 0.3, &ALPHA_BAD),
+            p("f_avg", 0.5, &UNIT_BAD),
+        ],
+        |x| vec![energy::kulla_conty_ggx(x[0], x[1], x[2], x[3])],
+    ));
+    t.push(
+        k(
+            "ibl::energy::kulla_conty_ggx_rgb",
+            vec![
+                c("n_dot_v", 0.8),
+                c("n_dot_l", 0.6),
+                p("alpha", 0.3, &ALPHA_BAD),
+                rgb("f_avg", [0.9, 0.6, 0.3], &UNIT_BAD),
+            ],
+            |x| o3(energy::kulla_conty_ggx_rgb(x[0], x[1], x[2], v3(x, 3))),
+        )
+        .dep("f_avg.x", &[0])
+        .dep("f_avg.y", &[1])
+        .dep("f_avg.z", &[2]),
+    );
+    t.push(k(
+        "ibl::energy::turquin_scale",
+        vec![
+            p("e", 0.8, &[0.0, -0.1, 1.1, INF, -INF]),
+            p("f", 0.5, &UNIT_BAD),
+        ],
+        |x| vec![energy::turquin_scale(x[0], x[1])],
+    ));
+    t.push(k(
+        "ibl::energy::fdez_aguera_ms",
+        vec![
+            p("fss_ess", 0.5, &UNIT_BAD),
+            p("e_ss", 0.8, &UNIT_BAD),
+            p("f_avg", 0.5, &UNIT_BAD),
+        ],
+        |x| vec![energy::fdez_aguera_ms(x[0], x[1], x[2])],
+    ));
+    t.push(k(
+        "ibl::energy::fdez_aguera",
+        vec![
+            p("a", 0.6, &[-0.1, 0.9, INF, -INF]),
+            p("b", 0.2, &[-0.1, 0.5, INF, -INF]),
+            p("f0", 0.04, &UNIT_BAD),
+        ],
+        |x| {
+            let (a, b) = energy::fdez_aguera(x[0], x[1], x[2]);
+            vec![a, b]
+        },
+    ));
+
+    t.push(k(
+        "ibl::prefilter::sample_from",
+        vec![c("u1", 0.3), c("u2", 0.7), p("alpha", 0.3, &ALPHA_BAD)],
+        |x| {
+            let s = prefilter::sample_from(x[0], x[1], x[2]);
+            vec![s.dir.x, s.dir.y, s.dir.z, s.weight, s.pdf]
+        },
+    ));
+    t.push(k(
+        "ibl::prefilter::sample",
+        vec![p("alpha", 0.3, &ALPHA_BAD)],
+        |x| {
+            let s = prefilter::sample(3, 16, x[0]);
+            vec![s.dir.x, s.dir.y, s.dir.z, s.weight, s.pdf]
+        },
+    ));
+    t.push(k(
+        "ibl::prefilter::pdf",
+        vec![v("dir", [0.3, 0.2, 0.9]), p("alpha", 0.3, &ALPHA_BAD)],
+        |x| vec![prefilter::pdf(v3(x, 0), x[3])],
+    ));
+    t.push(k(
+        "ibl::prefilter::mip_level",
+        vec![
+            p("pdf", 1.0, &[-0.1, -INF]),
+            p("sample_count", 1024.0, &[0.5, INF, -INF]),
+            p("face_size", 256.0, &[0.5, INF, -INF]),
+        ],
+        |x| vec![prefilter::mip_level(x[0], x[1], x[2])],
+    ));
+    t.push(k(
+        "ibl::irradiance::sh9_basis",
+        vec![v("d", [0.3, 0.2, 0.9])],
+        |x| irradiance::sh9_basis(v3(x, 0)).to_vec(),
+    ));
+    t.push(k("Sh9::eval", vec![v("dir", [0.3, 0.2, 0.9])], |x| {
+        o3(sh_sky::<T>().eval(v3(x, 0)))
+    }));
+    t.push(k("Sh9::irradiance", vec![v("n", [0.3, 0.2, 0.9])], |x| {
+        o3(sh_sky::<T>().irradiance(v3(x, 0)))
+    }));
+}
+
+/// A fixed SH9 environment (a bright sky over a dim ground) on the lane type.
+#[cfg(feature = "ibl")]
+fn sh_sky<T: Real>() -> brdf::ibl::irradiance::Sh9<T> {
+    let sh =
+        brdf::ibl::irradiance::project(|d| V3::splat(if d.z > 0.0 { 1.0 + d.z } else { 0.2 }), 16);
+    brdf::ibl::irradiance::Sh9::splat_from(&sh)
 }
 
 /// `frame` and `vec3`: always compiled.
@@ -1760,6 +1991,53 @@ fn every_kernel_keeps_the_bad_input_rule_on_every_lane_type() {
 
 /// Public functions that are not kernels of float or `V3` input, with the reason.
 const NOT_KERNELS: &[(&str, &str)] = &[
+    ("ibl::dfg::dfg", "f64 quadrature of one table entry"),
+    ("ibl::dfg::table", "table builder into a caller's buffer"),
+    (
+        "ibl::dfg::lookup",
+        "table lookup (its inputs are clamped texture coordinates)",
+    ),
+    (
+        "ibl::energy::e_ggx_estimate",
+        "f64 quadrature of one table entry",
+    ),
+    (
+        "ibl::energy::e_avg_ggx_estimate",
+        "f64 quadrature of one table entry",
+    ),
+    (
+        "ibl::energy::e_table",
+        "table builder into a caller's buffer",
+    ),
+    (
+        "ibl::energy::e_avg_table",
+        "table builder into a caller's buffer",
+    ),
+    ("ibl::energy::fresnel_avg_conductor", "f64 quadrature"),
+    (
+        "ibl::prefilter::hammersley",
+        "f64 point set (indices, not values)",
+    ),
+    (
+        "ibl::prefilter::samples",
+        "iterator over sample (integer indices)",
+    ),
+    (
+        "ibl::prefilter::fill",
+        "fills a caller's buffer through sample",
+    ),
+    ("ibl::irradiance::gauss_legendre", "f64 quadrature nodes"),
+    ("ibl::irradiance::irradiance", "f64 quadrature of a closure"),
+    (
+        "ibl::irradiance::cube_texel_solid_angle",
+        "f64 of integer texel indices",
+    ),
+    ("ibl::irradiance::project", "f64 quadrature of a closure"),
+    ("Sh9::zero", "constructor"),
+    ("Sh9::splat_from", "constructor"),
+    ("Sh9::add", "accumulator of a renderer's own samples"),
+    ("Sh9::cosine_convolved", "coefficient scaling (constants)"),
+    ("Sh9::irradiance_matrix", "coefficient rearrangement"),
     ("error::require", "validation helper of the constructors"),
     ("V3::splat", "constructor"),
     ("V3::broadcast", "constructor: one vector in every lane"),
@@ -1864,6 +2142,10 @@ const NOT_KERNEL_METHODS: &[&str] = &[
 
 /// Files scanned, with the module path their free functions have.
 const SOURCES: &[(&str, &str)] = &[
+    ("ibl::dfg", include_str!("../src/ibl/dfg.rs")),
+    ("ibl::energy", include_str!("../src/ibl/energy.rs")),
+    ("ibl::irradiance", include_str!("../src/ibl/irradiance.rs")),
+    ("ibl::prefilter", include_str!("../src/ibl/prefilter.rs")),
     ("beckmann", include_str!("../src/beckmann.rs")),
     ("color", include_str!("../src/color.rs")),
     ("cook_torrance", include_str!("../src/cook_torrance.rs")),
