@@ -49,6 +49,7 @@
 //! | [`vec3`] | [`V3`]: 3-vector of scalars or lanes (structure of arrays), glam conversions | always |
 //! | [`frame`] | orthonormal basis from a normal, local-frame `cos_theta`/`tan2_theta`/`cos_phi` | always |
 //! | [`error`] | [`ParamError`], returned by parameter constructors | always |
+//! | [`batch`] | any kernel over structure-of-arrays slices, 8 `f32` / 4 `f64` at a time | always |
 //! | `fresnel` | Schlick (+F90, SG), exact dielectric and polarized, conductor, F82 tint | `fresnel` |
 //! | `microfacet` | the `Microfacet` trait (D, Lambda, G1, G2) shared by the NDFs | `microfacet` |
 //! | `ggx` | GGX / Trowbridge-Reitz, isotropic and anisotropic, real-time V approximations | `ggx` |
@@ -98,6 +99,7 @@
 #![deny(missing_docs)]
 #![forbid(unsafe_code)]
 
+pub mod batch;
 pub mod error;
 pub mod frame;
 pub mod real;

@@ -51,7 +51,11 @@
 //!   disagree on NaN; this definition is the same everywhere).
 //! - `recip` is the correctly rounded `1 / x` (not the 12-bit `rcpps` estimate).
 //! - `mul_add(a, b)` is `self * a + b`, fused when the target has FMA (`target_feature =
-//!   "fma"`) and two roundings otherwise, identically for scalar and lane types on one target.
+//!   "fma"` on x86, NEON on aarch64) and two roundings otherwise, identically for scalar and
+//!   lane types on one target. On scalars it compiles to the fused instruction inline (through
+//!   `wide`'s 128-bit types, not `libm::fmaf`, which is a call that picks its implementation at
+//!   run time), and `sqrt` to `sqrtss` / `sqrtsd`: a build with `-C target-cpu=native` is never
+//!   slower on scalars than the default build.
 //!
 //! # Accuracy of the lane paths
 //! Scalar paths call `libm` (correctly rounded or within 1 ULP for the functions used). Lane
@@ -241,7 +245,8 @@ pub trait Real:
     fn saturate(self) -> Self {
         self.clamp(Self::ZERO, Self::ONE)
     }
-    /// `self * a + b`, fused when the target has FMA.
+    /// `self * a + b`, fused when the target has FMA (one instruction, inline; see the module
+    /// docs).
     fn mul_add(self, a: Self, b: Self) -> Self;
     /// Square root, correctly rounded; NaN for negative input.
     fn sqrt(self) -> Self;
@@ -312,6 +317,98 @@ pub trait Real:
     #[inline]
     fn sq(self) -> Self {
         self * self
+    }
+}
+
+// Scalar fused multiply-add and square root as single instructions. `libm::fmaf` is a call
+// (on x86_64 one that picks its implementation at run time through a function pointer), and
+// `libm::sqrtf` a call that is not inlined across crates; `wide`'s 128-bit types wrap the
+// instructions in safe, always-inlined functions, and LLVM narrows a splat, one lane
+// operation and the extraction of lane 0 to the scalar instruction (`vfmadd213ss`, `sqrtss`).
+// Without FMA the multiply-add is `a * b + c`, two roundings, exactly as before and as the
+// lanes do on such targets (`tests/lanes_vs_scalar.rs`); `tests/scalar_instructions.rs`
+// checks both against their definitions.
+
+/// a b + c, fused where the target has FMA (x86 with `fma`, aarch64 with NEON).
+#[inline(always)]
+fn fma_f32(a: f32, b: f32, c: f32) -> f32 {
+    #[cfg(any(
+        target_feature = "fma",
+        all(target_arch = "aarch64", target_feature = "neon")
+    ))]
+    {
+        use wide::f32x4;
+        f32x4::splat(a)
+            .mul_add(f32x4::splat(b), f32x4::splat(c))
+            .to_array()[0]
+    }
+    #[cfg(not(any(
+        target_feature = "fma",
+        all(target_arch = "aarch64", target_feature = "neon")
+    )))]
+    {
+        a * b + c
+    }
+}
+
+/// a b + c on f64, as [`fma_f32`].
+#[inline(always)]
+fn fma_f64(a: f64, b: f64, c: f64) -> f64 {
+    #[cfg(any(
+        target_feature = "fma",
+        all(target_arch = "aarch64", target_feature = "neon")
+    ))]
+    {
+        use wide::f64x2;
+        f64x2::splat(a)
+            .mul_add(f64x2::splat(b), f64x2::splat(c))
+            .to_array()[0]
+    }
+    #[cfg(not(any(
+        target_feature = "fma",
+        all(target_arch = "aarch64", target_feature = "neon")
+    )))]
+    {
+        a * b + c
+    }
+}
+
+/// The correctly rounded square root as one instruction where the target has one in `wide`
+/// (SSE, NEON); `libm::sqrtf` elsewhere.
+#[inline(always)]
+fn sqrt_f32(x: f32) -> f32 {
+    #[cfg(any(
+        target_feature = "sse",
+        all(target_arch = "aarch64", target_feature = "neon")
+    ))]
+    {
+        wide::f32x4::splat(x).sqrt().to_array()[0]
+    }
+    #[cfg(not(any(
+        target_feature = "sse",
+        all(target_arch = "aarch64", target_feature = "neon")
+    )))]
+    {
+        libm::sqrtf(x)
+    }
+}
+
+/// [`sqrt_f32`] on f64 (SSE2, NEON).
+#[inline(always)]
+fn sqrt_f64(x: f64) -> f64 {
+    #[cfg(any(
+        target_feature = "sse2",
+        all(target_arch = "aarch64", target_feature = "neon")
+    ))]
+    {
+        wide::f64x2::splat(x).sqrt().to_array()[0]
+    }
+    #[cfg(not(any(
+        target_feature = "sse2",
+        all(target_arch = "aarch64", target_feature = "neon")
+    )))]
+    {
+        libm::sqrt(x)
     }
 }
 
@@ -396,14 +493,7 @@ macro_rules! impl_real_scalar {
             }
             #[inline]
             fn mul_add(self, a: Self, b: Self) -> Self {
-                #[cfg(target_feature = "fma")]
-                {
-                    $fma(self, a, b)
-                }
-                #[cfg(not(target_feature = "fma"))]
-                {
-                    self * a + b
-                }
+                $fma(self, a, b)
             }
             #[inline]
             fn sqrt(self) -> Self {
@@ -496,8 +586,8 @@ impl_real_scalar!(
     libm::atan2f,
     libm::acosf,
     libm::asinf,
-    libm::sqrtf,
-    libm::fmaf,
+    sqrt_f32,
+    fma_f32,
     libm::copysignf,
     libm::floorf,
     libm::erfcf
@@ -517,8 +607,8 @@ impl_real_scalar!(
     libm::atan2,
     libm::acos,
     libm::asin,
-    libm::sqrt,
-    libm::fma,
+    sqrt_f64,
+    fma_f64,
     libm::copysign,
     libm::floor,
     libm::erfc

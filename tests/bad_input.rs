@@ -1991,6 +1991,18 @@ fn every_kernel_keeps_the_bad_input_rule_on_every_lane_type() {
 
 /// Public functions that are not kernels of float or `V3` input, with the reason.
 const NOT_KERNELS: &[(&str, &str)] = &[
+    (
+        "batch::run",
+        "applies a kernel over slices (the kernel keeps the rule)",
+    ),
+    (
+        "batch::run_f32",
+        "applies a kernel over slices (the kernel keeps the rule)",
+    ),
+    (
+        "batch::run_f64",
+        "applies a kernel over slices (the kernel keeps the rule)",
+    ),
     ("ibl::dfg::dfg", "f64 quadrature of one table entry"),
     ("ibl::dfg::table", "table builder into a caller's buffer"),
     (
@@ -2142,6 +2154,7 @@ const NOT_KERNEL_METHODS: &[&str] = &[
 
 /// Files scanned, with the module path their free functions have.
 const SOURCES: &[(&str, &str)] = &[
+    ("batch", include_str!("../src/batch.rs")),
     ("ibl::dfg", include_str!("../src/ibl/dfg.rs")),
     ("ibl::energy", include_str!("../src/ibl/energy.rs")),
     ("ibl::irradiance", include_str!("../src/ibl/irradiance.rs")),

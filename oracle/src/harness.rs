@@ -35,7 +35,7 @@ use rug::Float;
 use crate::PREC;
 
 /// The scalar type a measurement is made in.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum Ty {
     /// `f32` (and `f32x8` lanes).
     F32,
@@ -325,13 +325,75 @@ pub struct Options {
     pub scalars_only: bool,
 }
 
+/// What one (case, type) costs to prepare, kept for the process: the points, their
+/// references at [`PREC`], and the ill-conditioned rows' condition numbers. A test that
+/// measures every case more than once (the perturbation proof measures them three times)
+/// pays for the MPFR work once; the points functions are deterministic, so nothing changes.
+#[derive(Clone)]
+struct Prepared {
+    points: Vec<Vec<f64>>,
+    refs: Vec<Float>,
+    kappas: Vec<f64>,
+}
+
+type Cache = std::sync::Mutex<std::collections::HashMap<(&'static str, Ty), Prepared>>;
+
+fn cache() -> &'static Cache {
+    static CACHE: std::sync::OnceLock<Cache> = std::sync::OnceLock::new();
+    CACHE.get_or_init(Default::default)
+}
+
 /// The points of `case` for `ty`, each coordinate rounded to `ty`.
 #[must_use]
 pub fn points_for(case: &Case, ty: Ty) -> Vec<Vec<f64>> {
+    if let Some(p) = cache()
+        .lock()
+        .ok()
+        .and_then(|c| c.get(&(case.name, ty)).cloned())
+    {
+        return p.points;
+    }
     (case.points)(ty)
         .into_iter()
         .map(|p| p.into_iter().map(|v| ty.round(v)).collect())
         .collect()
+}
+
+/// The points, references and condition numbers of (case, ty), from the cache or computed
+/// and cached.
+fn prepared(case: &Case, ty: Ty) -> Prepared {
+    // The lock is held while computing: a second test thread asking for the same case waits
+    // and then reads it, instead of repeating the MPFR work beside it.
+    let mut guard = cache()
+        .lock()
+        .unwrap_or_else(std::sync::PoisonError::into_inner);
+    if let Some(p) = guard.get(&(case.name, ty)) {
+        return p.clone();
+    }
+    let points: Vec<Vec<f64>> = (case.points)(ty)
+        .into_iter()
+        .map(|p| p.into_iter().map(|v| ty.round(v)).collect())
+        .collect();
+    let refs = references(case, &points, PREC);
+    let ill = case.name.ends_with(ILL_CONDITIONED);
+    let kappas = points
+        .iter()
+        .zip(&refs)
+        .map(|(p, r)| {
+            if ill && !r.is_nan() {
+                condition(case.reference, ty, p, case.perturbed).max(1.0)
+            } else {
+                1.0
+            }
+        })
+        .collect();
+    let prep = Prepared {
+        points,
+        refs,
+        kappas,
+    };
+    guard.insert((case.name, ty), prep.clone());
+    prep
 }
 
 /// The working precision for the point `p`: `base` plus twice the largest binary exponent of
@@ -386,8 +448,11 @@ fn eval_lanes<T: Real>(
 pub fn measure(case: &Case, opts: Options) -> Measurement {
     let mut m = Measurement::default();
     for ty in [Ty::F32, Ty::F64] {
-        let pts = points_for(case, ty);
-        let refs = references(case, &pts, PREC);
+        let Prepared {
+            points: pts,
+            refs,
+            kappas,
+        } = prepared(case, ty);
         if let Some(i) = refs.iter().position(Float::is_nan) {
             panic!("{}: reference is NaN at {:?}", case.name, pts[i]);
         }
@@ -427,13 +492,8 @@ pub fn measure(case: &Case, opts: Options) -> Measurement {
             Ty::F32 => (&mut m.f32, &mut m.f32x8),
             Ty::F64 => (&mut m.f64, &mut m.f64x4),
         };
-        let ill = case.name.ends_with(ILL_CONDITIONED);
         for (i, p) in pts.iter().enumerate() {
-            let kappa = if ill {
-                condition(case.reference, ty, p, case.perturbed).max(1.0)
-            } else {
-                1.0
-            };
+            let kappa = kappas[i];
             s_stats.record(p, scalar[i], &refs[i], ty, perturb, kappa);
             if let Some(l) = &lanes {
                 l_stats.record(p, l[i], &refs[i], ty, perturb, kappa);
