@@ -1,0 +1,219 @@
+#!/usr/bin/env python3
+"""Question answered: how long do brdf's f32x8 kernels take against Mitsuba 3's LLVM JIT on
+the same batch of directions, on one core, in the same run?
+
+Run (setup in README.md, beside this file): `python3 benches/mitsuba/compare.py` from the
+repository root. It
+
+1. writes N (default 10^7) random view and light directions, uniform on the upper hemisphere
+   (numpy, fixed seed), as six f32 structure-of-arrays slices to a raw file (vx, vy, vz,
+   lx, ly, lz);
+2. builds brdf's throughput benchmark with `-C target-cpu=native` (its timing mode reads that
+   file; benches/throughput.rs documents it);
+3. times, round after round (interleaved: one Mitsuba evaluation of each kernel, then one
+   timed brdf run of each), the kernels below, each warm (compiled and cached before the
+   first timed round), and prints the median of the rounds:
+   - GGX D of the view direction taken as the microfacet normal m:
+     Mitsuba `MicrofacetDistribution(GGX, alpha).eval(m)`, brdf `ggx::d(m.z, alpha)`;
+   - Beckmann D, the same with `MicrofacetType.Beckmann` and `beckmann::d`;
+   - the rough conductor, one channel, f cos(theta_l) as a BSDF evaluation returns it:
+     Mitsuba D(h) G(v, l, h) F_conductor(v.h, eta + i k) / (4 cos(theta_v)) with its
+     distribution's `eval` and `G` and `mi.fresnel_conductor` (the arithmetic of its
+     `roughconductor` plugin's `eval`), brdf D V F n.l with `cook_torrance::ggx` and
+     `fresnel::conductor`, both forming the half vector from the two directions;
+   - the copy floor: brdf's `copy_from_slice` of one input slice into the output slice;
+   - a yardstick row: GGX D in plain working precision (defined in benches/throughput.rs,
+     not a brdf kernel), to show what brdf's correctly rounded `ggx::d` costs.
+
+The whole process (Python, drjit's worker and the brdf binary) is pinned to one core with
+`taskset -c 0` and drjit runs one thread. Absolute times move from run to run (and on a shared
+machine by much more); the ratio column, from one interleaved run, is the figure to quote.
+
+Differences the ratio carries: Mitsuba's `eval(m)` reads the three components of m (12 bytes
+per element), brdf's D the cosine only (4 bytes); Mitsuba's G is the separable Smith
+G1(v) G1(l), brdf's V the height-correlated form (the values differ by design: the script
+prints the median ratio of the two results). Mitsuba's times include tracing the expression in
+Python (a fraction of a millisecond per kernel).
+"""
+
+import argparse
+import json
+import os
+import shutil
+import statistics
+import subprocess
+import sys
+import tempfile
+import time
+
+import numpy as np
+
+ALPHA = 0.3
+ETA, K = 0.2, 3.0
+KERNELS = ["ggx_d", "beckmann_d", "rough_conductor"]
+LABELS = {
+    "ggx_d": "GGX D",
+    "beckmann_d": "Beckmann D",
+    "rough_conductor": "rough conductor: D, G, complex Fresnel, times cos (1 channel)",
+}
+
+
+def pin_to_one_core(args):
+    """Re-runs this script under `taskset -c 0` unless already on one core."""
+    if args.no_pin or len(os.sched_getaffinity(0)) == 1:
+        return
+    if shutil.which("taskset") is None:
+        print("taskset not found: running unpinned", file=sys.stderr)
+        return
+    os.execvp("taskset", ["taskset", "-c", "0", sys.executable, *sys.argv])
+
+
+def write_directions(path, n, seed):
+    """n view and n light directions uniform on the upper hemisphere, six f32 SoA slices."""
+    rng = np.random.default_rng(seed)
+    arrays = []
+    for _ in range(2):
+        z = rng.random(n)
+        phi = 2.0 * np.pi * rng.random(n)
+        s = np.sqrt((1.0 - z) * (1.0 + z))
+        arrays += [s * np.cos(phi), s * np.sin(phi), z]
+    soa = np.stack(arrays).astype("<f4")
+    soa.tofile(path)
+    return soa
+
+
+def build_brdf(repo, target_dir):
+    """Builds benches/throughput.rs with -C target-cpu=native and returns its executable."""
+    env = dict(os.environ)
+    env["RUSTFLAGS"] = (env.get("RUSTFLAGS", "") + " -C target-cpu=native").strip()
+    env["CARGO_TARGET_DIR"] = target_dir
+    cmd = ["cargo", "bench", "--bench", "throughput", "--no-run", "--message-format=json"]
+    out = subprocess.run(cmd, cwd=repo, env=env, check=True, capture_output=True, text=True)
+    for line in out.stdout.splitlines():
+        msg = json.loads(line)
+        if msg.get("reason") == "compiler-artifact" and msg["target"]["name"] == "throughput":
+            if msg.get("executable"):
+                return msg["executable"]
+    raise RuntimeError("cargo did not report the throughput executable")
+
+
+def run_brdf(exe, raw, runs, out_dir=None):
+    """One brdf timing run: {kernel: [ms, ...]}."""
+    env = dict(os.environ, BRDF_THROUGHPUT_INPUT=raw, BRDF_THROUGHPUT_RUNS=str(runs))
+    if out_dir:
+        env["BRDF_THROUGHPUT_OUTPUT"] = out_dir
+    out = subprocess.run([exe], env=env, check=True, capture_output=True, text=True)
+    times = {}
+    for line in out.stdout.splitlines():
+        tag, name, ms = line.split()
+        if tag == "time":
+            times.setdefault(name, []).append(float(ms))
+    return times
+
+
+def mitsuba_kernels(soa, variant, threads):
+    """Mitsuba's kernels as functions returning an unevaluated drjit array."""
+    import drjit as dr
+    import mitsuba as mi
+
+    mi.set_variant(variant)
+    dr.set_thread_count(threads)
+    vx, vy, vz, lx, ly, lz = (mi.Float(a) for a in soa)
+    v, l = mi.Vector3f(vx, vy, vz), mi.Vector3f(lx, ly, lz)
+    dr.eval(v, l)
+    ggx = mi.MicrofacetDistribution(mi.MicrofacetType.GGX, ALPHA, False)
+    beckmann = mi.MicrofacetDistribution(mi.MicrofacetType.Beckmann, ALPHA, False)
+    eta = mi.Complex2f(ETA, K)
+
+    def rough_conductor():
+        h = dr.normalize(v + l)
+        d = ggx.eval(h)
+        g = ggx.G(v, l, h)
+        f = mi.fresnel_conductor(dr.dot(v, h), eta)
+        value = d * g * f / (4.0 * v.z)
+        return dr.select((v.z > 0) & (l.z > 0), value, 0.0)
+
+    kernels = {
+        "ggx_d": lambda: ggx.eval(v),
+        "beckmann_d": lambda: beckmann.eval(v),
+        "rough_conductor": rough_conductor,
+    }
+    versions = {"mitsuba": mi.__version__, "drjit": dr.__version__, "variant": variant,
+                "threads": dr.thread_count()}
+    return kernels, versions
+
+
+def time_mitsuba(kernel):
+    import drjit as dr
+
+    t = time.perf_counter()
+    r = kernel()
+    dr.eval(r)
+    dr.sync_thread()
+    return (time.perf_counter() - t) * 1e3, r
+
+
+def main():
+    p = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    p.add_argument("--n", type=int, default=10_000_000, help="batch size")
+    p.add_argument("--rounds", type=int, default=7, help="interleaved rounds (median)")
+    p.add_argument("--seed", type=int, default=13)
+    p.add_argument("--variant", default="llvm_ad_rgb", help="Mitsuba variant (an llvm_* one)")
+    p.add_argument("--threads", type=int, default=1, help="drjit worker threads")
+    p.add_argument("--brdf-exe", help="a built throughput bench binary (skips the build)")
+    p.add_argument("--target-dir", default="target/native", help="CARGO_TARGET_DIR of the build")
+    p.add_argument("--no-pin", action="store_true", help="do not pin to core 0")
+    args = p.parse_args()
+    pin_to_one_core(args)
+    repo = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+    exe = args.brdf_exe or build_brdf(repo, os.path.join(repo, args.target_dir))
+
+    with tempfile.TemporaryDirectory() as tmp:
+        raw = os.path.join(tmp, "directions.f32")
+        soa = write_directions(raw, args.n, args.seed)
+        kernels, versions = mitsuba_kernels(soa, args.variant, args.threads)
+        print(f"# {versions}, n = {args.n}, rounds = {args.rounds}, "
+              f"cpus = {sorted(os.sched_getaffinity(0))}")
+
+        # Warm: Mitsuba compiles and caches each kernel; brdf writes its values once.
+        mi_values = {name: np.asarray(time_mitsuba(k)[1]) for name, k in kernels.items()}
+        run_brdf(exe, raw, 1, out_dir=tmp)
+        for name in KERNELS:
+            ours = np.fromfile(os.path.join(tmp, f"{name}.f32"), dtype="<f4")
+            theirs = mi_values[name].astype(np.float64)
+            ok = theirs > 0
+            ratio = ours[ok] / theirs[ok]
+            print(f"# values {name}: brdf / Mitsuba median {np.median(ratio):.6f}, "
+                  f"range [{ratio.min():.4g}, {ratio.max():.4g}] over {ok.sum()} elements")
+
+        mi_ms = {name: [] for name in KERNELS}
+        brdf_ms = {name: [] for name in KERNELS + ["ggx_d_plain", "copy"]}
+        for _ in range(args.rounds):
+            for name in KERNELS:
+                mi_ms[name].append(time_mitsuba(kernels[name])[0])
+            for name, ms in run_brdf(exe, raw, 1).items():
+                brdf_ms[name] += ms
+
+    med = {k: statistics.median(v) for k, v in brdf_ms.items()}
+    copy = med["copy"]
+    print(f"\n| kernel ({args.n:.0e} elements) | Mitsuba 3 | brdf f32x8 | brdf / Mitsuba "
+          f"| brdf / copy |")
+    print("|---|---|---|---|---|")
+    for name in KERNELS:
+        m, b = statistics.median(mi_ms[name]), med[name]
+        print(f"| {LABELS[name]} | {m:.2f} ms | {b:.2f} ms | {b / m:.2f} | {b / copy:.2f} |")
+    if "ggx_d_plain" in med:
+        b = med["ggx_d_plain"]
+        m = statistics.median(mi_ms["ggx_d"])
+        print(f"| GGX D in working precision (bench-local yardstick, not a brdf kernel) "
+              f"| {m:.2f} ms | {b:.2f} ms | {b / m:.2f} | {b / copy:.2f} |")
+    print(f"| copy (floor) | | {copy:.2f} ms | | 1.00 |")
+    print("\n# every round (ms):")
+    for name in KERNELS:
+        print(f"#   mitsuba {name}: {' '.join(f'{x:.2f}' for x in mi_ms[name])}")
+    for name, v in brdf_ms.items():
+        print(f"#   brdf {name}: {' '.join(f'{x:.2f}' for x in v)}")
+
+
+if __name__ == "__main__":
+    main()
