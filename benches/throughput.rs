@@ -28,9 +28,13 @@
 //!
 //! Kernels (parameters fixed, alpha = 0.3, the width, not perceptual roughness):
 //! - `ggx_d`: `ggx::d(n.h, alpha)`; `beckmann_d`: `beckmann::d(n.h, alpha)`.
+//! - `ggx_d_fast`, `beckmann_d_fast`: `ggx::d_fast`, `beckmann::d_fast` (working precision,
+//!   their error against the exact forms in their docs).
 //! - `rough_conductor`: D V F n.l with `cook_torrance::ggx` (GGX D, height-correlated Smith V)
 //!   and `fresnel::conductor(v.h, 0.2, 3.0)`, one channel: what a renderer's BSDF evaluation
 //!   returns (f times the cosine, as Mitsuba 3's `roughconductor` `eval` does).
+//! - `rough_conductor_fast`: the same term with `ggx::d_fast` and `fresnel::conductor_fast`
+//!   (V stays `ggx::v_correlated`).
 //! - `ggx_lambert`: `cook_torrance::ggx` with `fresnel::schlick(0.04, v.h)` plus
 //!   `diffuse::lambert(rho = 0.5)`, one channel.
 //! - `material_gltf`: `material::gltf`, base colour (0.9, 0.6, 0.3), metallic 0.5, roughness
@@ -41,8 +45,9 @@
 //! `BRDF_THROUGHPUT_INPUT` names a raw file (six little-endian `f32` arrays of equal length:
 //! view x, y, z, then light x, y, z, unit vectors with z > 0): it times `ggx_d`, `ggx_d_plain`
 //! (GGX D in working precision, no error-free transformations: a yardstick, not a crate kernel),
-//! `beckmann_d`,
-//! `rough_conductor` (from the directions: half vector, cosines, then the term) and the
+//! `ggx_d_fast`, `beckmann_d`, `beckmann_d_fast`,
+//! `rough_conductor`, `rough_conductor_fast` (from the directions: half vector, cosines, then
+//! the term) and the
 //! copy floor on `f32x8` with `std::time::Instant`, after one untimed run of each,
 //! `BRDF_THROUGHPUT_RUNS` times (default 7), and prints one line per run:
 //! `time <kernel> <milliseconds>`. With `BRDF_THROUGHPUT_OUTPUT=<dir>` it also writes each
@@ -72,11 +77,42 @@ fn beckmann_d<T: Real>([nh]: [T; 1]) -> [T; 1] {
     [beckmann::d(nh, T::splat(ALPHA))]
 }
 
+/// GGX D of n.h in working precision.
+#[inline]
+fn ggx_d_fast<T: Real>([nh]: [T; 1]) -> [T; 1] {
+    [ggx::d_fast(nh, T::splat(ALPHA))]
+}
+
+/// Beckmann D of n.h in working precision.
+#[inline]
+fn beckmann_d_fast<T: Real>([nh]: [T; 1]) -> [T; 1] {
+    [beckmann::d_fast(nh, T::splat(ALPHA))]
+}
+
 /// D V F n.l of a rough conductor, one channel.
 #[inline]
 fn rough_conductor<T: Real>([nh, nv, nl, vh]: [T; 4]) -> [T; 1] {
     let f = fresnel::conductor(vh, T::splat(ETA), T::splat(K));
     [cook_torrance::ggx(nh, nv, nl, T::splat(ALPHA), f) * nl.saturate()]
+}
+
+/// The rough conductor of [`rough_conductor`] with the working-precision D and F:
+/// `ggx::d_fast` times `ggx::v_correlated` times `fresnel::conductor_fast`, times n.l.
+#[inline]
+fn rough_conductor_fast<T: Real>([nh, nv, nl, vh]: [T; 4]) -> [T; 1] {
+    let a = T::splat(ALPHA);
+    let f = fresnel::conductor_fast(vh, T::splat(ETA), T::splat(K));
+    [fast_term(nh, nv, nl, a, f) * nl.saturate()]
+}
+
+/// D V F with `ggx::d_fast`, assembled like `cook_torrance::ggx` (D V capped, then times F,
+/// capped): 0 below either horizon, NaN for NaN cosines.
+#[inline]
+fn fast_term<T: Real>(nh: T, nv: T, nl: T, a: T, f: T) -> T {
+    let v = ((ggx::d_fast(nh, a) * ggx::v_correlated(nv, nl, a)).min(T::MAX) * f).min(T::MAX);
+    let above = nv.simd_gt(T::ZERO) & nl.simd_gt(T::ZERO);
+    let nan = nv.is_nan() | nl.is_nan();
+    T::select(above, v, T::select(nan, T::splat(f64::NAN), T::ZERO))
 }
 
 /// GGX Cook-Torrance with Schlick's F plus Lambert, one channel.
@@ -271,10 +307,24 @@ fn bench_throughput(c: &mut Criterion) {
     group(c, "ggx_d", &ALL, &nh, kernels!(ggx_d, Floor::Copy));
     group(
         c,
+        "ggx_d_fast",
+        &ALL,
+        &nh,
+        kernels!(ggx_d_fast, Floor::Copy),
+    );
+    group(
+        c,
         "beckmann_d",
         &ALL,
         &nh,
         kernels!(beckmann_d, Floor::Copy),
+    );
+    group(
+        c,
+        "beckmann_d_fast",
+        &ALL,
+        &nh,
+        kernels!(beckmann_d_fast, Floor::Copy),
     );
     let pass1 = Floor::Pass(floor_pass::<f32x8, 1>, floor_pass::<f64x4, 1>);
     group(
@@ -283,6 +333,14 @@ fn bench_throughput(c: &mut Criterion) {
         &ALL,
         &data,
         kernels!(rough_conductor, pass1),
+    );
+    let pass1 = Floor::Pass(floor_pass::<f32x8, 1>, floor_pass::<f64x4, 1>);
+    group(
+        c,
+        "rough_conductor_fast",
+        &ALL,
+        &data,
+        kernels!(rough_conductor_fast, pass1),
     );
     let pass1 = Floor::Pass(floor_pass::<f32x8, 1>, floor_pass::<f64x4, 1>);
     group(c, "ggx_lambert", &FEW, &data, kernels!(ggx_lambert, pass1));
@@ -347,9 +405,21 @@ fn timing_mode(path: &str) -> Result<(), String> {
             }),
         ),
         (
+            "ggx_d_fast",
+            Box::new(|o: &mut [f32]| {
+                let _ = batch::run_f32([a[2]], [o], |[z]| [ggx::d_fast(z, alpha)]);
+            }),
+        ),
+        (
             "beckmann_d",
             Box::new(|o: &mut [f32]| {
                 let _ = batch::run_f32([a[2]], [o], |[z]| [beckmann::d(z, alpha)]);
+            }),
+        ),
+        (
+            "beckmann_d_fast",
+            Box::new(|o: &mut [f32]| {
+                let _ = batch::run_f32([a[2]], [o], |[z]| [beckmann::d_fast(z, alpha)]);
             }),
         ),
         (
@@ -362,6 +432,19 @@ fn timing_mode(path: &str) -> Result<(), String> {
                     let vh = v.dot(h);
                     let f = fresnel::conductor(vh, eta, k);
                     [cook_torrance::ggx(h.z, vz, lz, alpha, f) * lz.saturate()]
+                });
+            }),
+        ),
+        (
+            "rough_conductor_fast",
+            Box::new(|o: &mut [f32]| {
+                let _ = batch::run_f32(a, [o], |[vx, vy, vz, lx, ly, lz]| {
+                    let (v, l) = (V3::new(vx, vy, vz), V3::new(lx, ly, lz));
+                    let s = v + l;
+                    let h = s * s.length().recip();
+                    let vh = v.dot(h);
+                    let f = fresnel::conductor_fast(vh, eta, k);
+                    [fast_term(h.z, vz, lz, alpha, f) * lz.saturate()]
                 });
             }),
         ),

@@ -233,6 +233,43 @@ pub fn d<T: Real>(n_dot_h: T, alpha: T) -> T {
     nan_where(a.is_nan(), above(n_dot_h, d))
 }
 
+/// Isotropic GGX NDF in working precision, the fast companion of [`d`]: the same
+/// D = alpha^2 / (pi ((n.h)^2 (alpha^2 - 1) + 1)^2), evaluated as real-time engines do
+/// (Filament's `D_GGX`, Guy and Agopian 2018, "Physically Based Rendering in Filament"):
+/// k = alpha / ((1 - c)(1 + c) + (c alpha)^2), D = k^2 / pi, for c = n_dot_h in (0, 1], 0 for
+/// c <= 0 (Walter et al. 2007 eq. 33). sin^2 is the product (1 - c)(1 + c), not 1 - c^2, so the
+/// denominator never cancels near c = 1 (where 1 - c^2 in working precision keeps no digit of
+/// alpha^2 for alpha below about 2^-12 in f32).
+///
+/// Domain, edges and bad input exactly as [`d`]: n_dot_h in [-1, 1] (above 1 clamped to 1),
+/// alpha in [0, +inf) finite, clamped to [ALPHA_MIN, ALPHA_MAX] (the width, not perceptual
+/// roughness); peak 1 / (pi alpha^2) at c = 1; NaN for NaN input, alpha < 0 or +inf; the result
+/// is capped at the largest finite value (never reached: D <= 1 / (pi ALPHA_MIN^2) = 3.2e7).
+///
+/// Accuracy: about ten flops and one division in working precision, against about 150 extra
+/// flops for [`d`]'s single rounding. Max error against [`d`] over cosines from 0 through 1e-7
+/// to 1 and alpha over [ALPHA_MIN, ALPHA_MAX] (65 000 points per type): 7 ULP, relative
+/// 5.3e-7 (f32); 8 ULP, relative 9.1e-16 (f64); the same on f32x8 and f64x4, whose lanes equal
+/// the scalar results bit for bit (`cargo test --all-features --test fast_variants --
+/// --nocapture`, default x86-64 build).
+#[inline]
+#[must_use]
+pub fn d_fast<T: Real>(n_dot_h: T, alpha: T) -> T {
+    let a = clamp_alpha(alpha);
+    let c = n_dot_h.min(T::ONE);
+    let ca = c * a;
+    // sin^2 in the fewest roundings: 1 - c^2 below c = 1/2 (>= 3/4, nothing cancels), the
+    // product (1 - c)(1 + c) above (1 - c exact there).
+    let s2 = T::select(
+        c.simd_lt(T::HALF),
+        (-c).mul_add(c, T::ONE),
+        sin2_from_cos(c),
+    );
+    let k = a / ca.mul_add(ca, s2);
+    let d = (k * k * T::FRAC_1_PI).min(T::MAX);
+    nan_where(a.is_nan(), above(n_dot_h, d))
+}
+
 /// Anisotropic GGX NDF from the half vector's components in the shading frame:
 /// D = 1 / (pi ax ay ((t.h/ax)^2 + (b.h/ay)^2 + (n.h)^2)^2), 0 for n_dot_h <= 0 (Heitz 2014
 /// eq. 85; Burley 2012). `t_dot_h`, `b_dot_h`: the half vector against tangent and bitangent;

@@ -89,8 +89,8 @@
 //!    the domain the tests sweep, up to the largest finite float.
 //!
 //! ## Accuracy
-//! The exact functions (NDFs, Smith terms, Fresnel, the transfer functions, the exact diffuse
-//! and Phong lobes) are held to ULP bounds against a correctly rounded reference (MPFR at 256
+//! The exact functions (NDFs, Smith terms, Fresnel, the transfer functions, the tonemapping
+//! operators, the exact diffuse and Phong lobes) are held to ULP bounds against a correctly rounded reference (MPFR at 256
 //! bits, evaluating each paper's own definition) by the `brdf-oracle` workspace member of the
 //! repository; the measured table is in the README ("Accuracy promises") and `docs/accuracy.md`,
 //! and the repository's report (`cargo run --release --example report`) prints it.

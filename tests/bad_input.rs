@@ -610,6 +610,15 @@ fn fresnel_rows<T: Real>(t: &mut Vec<Kernel<T>>) {
         ],
         |x| vec![fr::conductor(x[0], x[1], x[2])],
     ));
+    t.push(k(
+        "fresnel::conductor_fast",
+        vec![
+            c("cos_theta_i", VH),
+            p("eta", 0.2, &ETA_BAD),
+            p("k", 3.0, &NONNEG_BAD),
+        ],
+        |x| vec![fr::conductor_fast(x[0], x[1], x[2])],
+    ));
     t.push(
         k(
             "fresnel::conductor_rgb",
@@ -730,6 +739,9 @@ fn ggx_rows<T: Real>(t: &mut Vec<Kernel<T>>) {
     t.push(k("ggx::d", vec![c("n_dot_h", NH), a()], |x| {
         vec![ggx::d(x[0], x[1])]
     }));
+    t.push(k("ggx::d_fast", vec![c("n_dot_h", NH), a()], |x| {
+        vec![ggx::d_fast(x[0], x[1])]
+    }));
     t.push(k(
         "ggx::d_aniso",
         vec![
@@ -792,6 +804,9 @@ fn beckmann_rows<T: Real>(t: &mut Vec<Kernel<T>>) {
     let a = || p("alpha", 0.3, &ALPHA_BAD);
     t.push(k("beckmann::d", vec![c("n_dot_h", NH), a()], |x| {
         vec![bk::d(x[0], x[1])]
+    }));
+    t.push(k("beckmann::d_fast", vec![c("n_dot_h", NH), a()], |x| {
+        vec![bk::d_fast(x[0], x[1])]
     }));
     t.push(k("beckmann::a_of", vec![c("n_dot_v", NV), a()], |x| {
         vec![bk::a_of(x[0], x[1])]

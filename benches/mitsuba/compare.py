@@ -21,6 +21,9 @@ repository root. It
      distribution's `eval` and `G` and `mi.fresnel_conductor` (the arithmetic of its
      `roughconductor` plugin's `eval`), brdf D V F n.l with `cook_torrance::ggx` and
      `fresnel::conductor`, both forming the half vector from the two directions;
+   - beside each, brdf's working-precision variant against the same Mitsuba time:
+     `ggx::d_fast`, `beckmann::d_fast`, and the rough conductor with both `ggx::d_fast` and
+     `fresnel::conductor_fast` (their error against the exact forms is in their docs);
    - the copy floor: brdf's `copy_from_slice` of one input slice into the output slice;
    - a yardstick row: GGX D in plain working precision (defined in benches/throughput.rs,
      not a brdf kernel), to show what brdf's correctly rounded `ggx::d` costs.
@@ -51,10 +54,16 @@ import numpy as np
 ALPHA = 0.3
 ETA, K = 0.2, 3.0
 KERNELS = ["ggx_d", "beckmann_d", "rough_conductor"]
+# brdf's working-precision variants, each timed against the same Mitsuba kernel as its exact form.
+FAST = {"ggx_d_fast": "ggx_d", "beckmann_d_fast": "beckmann_d",
+        "rough_conductor_fast": "rough_conductor"}
 LABELS = {
     "ggx_d": "GGX D",
     "beckmann_d": "Beckmann D",
     "rough_conductor": "rough conductor: D, G, complex Fresnel, times cos (1 channel)",
+    "ggx_d_fast": "GGX D, `ggx::d_fast` (working precision)",
+    "beckmann_d_fast": "Beckmann D, `beckmann::d_fast` (working precision)",
+    "rough_conductor_fast": "rough conductor with `d_fast`, `conductor_fast`",
 }
 
 
@@ -178,23 +187,25 @@ def main():
         # Warm: Mitsuba compiles and caches each kernel; brdf writes its values once.
         mi_values = {name: np.asarray(time_mitsuba(k)[1]) for name, k in kernels.items()}
         run_brdf(exe, raw, 1, out_dir=tmp)
-        for name in KERNELS:
+        for name in KERNELS + list(FAST):
+            if not os.path.exists(os.path.join(tmp, f"{name}.f32")):
+                continue
             ours = np.fromfile(os.path.join(tmp, f"{name}.f32"), dtype="<f4")
-            theirs = mi_values[name].astype(np.float64)
+            theirs = mi_values[FAST.get(name, name)].astype(np.float64)
             ok = theirs > 0
             ratio = ours[ok] / theirs[ok]
             print(f"# values {name}: brdf / Mitsuba median {np.median(ratio):.6f}, "
                   f"range [{ratio.min():.4g}, {ratio.max():.4g}] over {ok.sum()} elements")
 
         mi_ms = {name: [] for name in KERNELS}
-        brdf_ms = {name: [] for name in KERNELS + ["ggx_d_plain", "copy"]}
+        brdf_ms = {name: [] for name in KERNELS + list(FAST) + ["ggx_d_plain", "copy"]}
         for _ in range(args.rounds):
             for name in KERNELS:
                 mi_ms[name].append(time_mitsuba(kernels[name])[0])
             for name, ms in run_brdf(exe, raw, 1).items():
                 brdf_ms[name] += ms
 
-    med = {k: statistics.median(v) for k, v in brdf_ms.items()}
+    med = {k: statistics.median(v) for k, v in brdf_ms.items() if v}
     copy = med["copy"]
     print(f"\n| kernel ({args.n:.0e} elements) | Mitsuba 3 | brdf f32x8 | brdf / Mitsuba "
           f"| brdf / copy |")
@@ -202,6 +213,10 @@ def main():
     for name in KERNELS:
         m, b = statistics.median(mi_ms[name]), med[name]
         print(f"| {LABELS[name]} | {m:.2f} ms | {b:.2f} ms | {b / m:.2f} | {b / copy:.2f} |")
+        fast = name + "_fast"
+        if med.get(fast) is not None:
+            b = med[fast]
+            print(f"| {LABELS[fast]} | {m:.2f} ms | {b:.2f} ms | {b / m:.2f} | {b / copy:.2f} |")
     if "ggx_d_plain" in med:
         b = med["ggx_d_plain"]
         m = statistics.median(mi_ms["ggx_d"])
