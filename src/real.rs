@@ -67,7 +67,7 @@
 //! | function | f32x8 vs f32 | f64x4 vs f64 | lane implementation |
 //! |---|---|---|---|
 //! | `sqrt`, `recip`, `abs`, `floor`, `min`, `max`, `copysign`, `mul_add` | 0 ULP | 0 ULP | IEEE instructions |
-//! | `exp` | 1 ULP | 2 ULP | `wide` polynomial |
+//! | `exp` | 1 ULP | 2 ULP | `wide` polynomial (f32: the same operations, bit-identical, without its data-dependent branches) |
 //! | `exp2` | 1 ULP | 0 ULP | `wide` polynomial (f32), `libm` per lane (f64: `wide` is 1901 ULP off) |
 //! | `ln` | 1 ULP | 1 ULP | `wide` polynomial, subnormals rescaled, negatives give NaN |
 //! | `sin`, `cos` | 1 ULP | 1 ULP | `wide` polynomial for \|x\| <= 1e3, `libm` per lane beyond |
@@ -719,7 +719,7 @@ macro_rules! impl_real_lanes {
             }
             #[inline]
             fn exp(self) -> Self {
-                $v::exp(self)
+                exp_lanes(self)
             }
             #[inline]
             fn exp2(self) -> Self {
@@ -837,6 +837,81 @@ impl Exp2Lanes for f64x4 {
     fn exp2_lanes(self) -> Self {
         f64x4::new(self.to_array().map(libm::exp2))
     }
+}
+
+// `wide`'s f32x8 exp branches twice on lane data (an early return when every lane underflows,
+// and a subnormal-result path taken when any lane's 2^n is below 2^-126). Inputs that mix
+// ordinary and far-negative arguments (the tail of a Beckmann D) make both branches
+// unpredictable. `exp_f32x8` is the same algorithm, operation for operation, with 2^n built
+// branch-free; its results are bit-identical to `f32x8::exp` on every f32 input.
+#[inline]
+fn exp_lanes<V: ExpLanes>(v: V) -> V {
+    v.exp_lanes()
+}
+trait ExpLanes {
+    fn exp_lanes(self) -> Self;
+}
+impl ExpLanes for f32x8 {
+    #[inline]
+    fn exp_lanes(self) -> Self {
+        exp_f32x8(self)
+    }
+}
+impl ExpLanes for f64x4 {
+    #[inline]
+    fn exp_lanes(self) -> Self {
+        f64x4::exp(self)
+    }
+}
+
+/// e^x on f32 lanes: Cody-Waite reduction x = r ln2 + y (r = round(x log2 e), ln 2 split in two
+/// f32 parts), e^y = 1 + y + y^2 P(y) with the degree-5 Taylor P, then times 2^r as
+/// (1 + ...) 2^(r - k) 2^k, k = 1 for r = 128, -64 for r < -126, else 0: the first product is
+/// exact, the second rounds once (into the subnormal range where the result is subnormal).
+/// The same operations as `wide::f32x8::exp`, so the same bits on every input.
+#[inline]
+fn exp_f32x8(x: f32x8) -> f32x8 {
+    let zero = f32x8::ZERO;
+    let max_x = f32x8::splat(88.723);
+    let min_x = f32x8::splat(-103.63);
+    // Lanes whose result is fixed (NaN, overflow to inf, underflow to 0) compute e^0 instead:
+    // their garbage would otherwise reach subnormal operands, which cost a microcode assist
+    // per instruction on many x86 cores.
+    let fixed = !(x.simd_ge(min_x) & x.simd_le(max_x));
+    let xs = fixed.select(zero, x);
+    // r in [-150, 128].
+    let r = (xs * f32x8::LOG2_E).round_ties_even();
+    let y = r.mul_neg_add(f32x8::splat(0.693_359_4), xs);
+    let y = r.mul_neg_add(f32x8::splat(-2.121_944_4e-4), y);
+    let y2 = y * y;
+    let y4 = y2 * y2;
+    let p = f32x8::splat(1.0 / 120.0)
+        .mul_add(y, f32x8::splat(1.0 / 24.0))
+        .mul_add(
+            y2,
+            f32x8::splat(1.0 / 5040.0)
+                .mul_add(y, f32x8::splat(1.0 / 720.0))
+                .mul_add(y4, f32x8::splat(1.0 / 6.0).mul_add(y, f32x8::splat(0.5))),
+        );
+    let z = p.mul_add(y2, y) + f32x8::ONE;
+    let big = r.simd_gt(f32x8::splat(127.0));
+    let sub = r.simd_lt(f32x8::splat(-126.0));
+    let k = big.select(f32x8::ONE, sub.select(f32x8::splat(-64.0), zero));
+    let two_k = big.select(
+        f32x8::TWO,
+        sub.select(f32x8::splat(5.421_011e-20), f32x8::ONE),
+    );
+    // 2^(r - k) from its exponent bits: r - k is in [-86, 127].
+    let biased = (r - k) + f32x8::splat(127.0 + 8_388_608.0);
+    let z = z * f32x8::from_bits(biased.to_bits() << 23_u32) * two_k;
+    // 2^-150 rounds to 0 in `wide`'s construction.
+    let z = r.simd_lt(f32x8::splat(-149.0)).select(zero, z);
+    let special = x.simd_gt(max_x).select(
+        f32x8::INFINITY,
+        x.simd_lt(min_x)
+            .select(zero, f32x8::from_bits(wide::u32x8::splat(0x7FC0_0101))),
+    );
+    fixed.select(special, z)
 }
 
 impl_real_lanes!(f32x8, f32, 8, 32);
