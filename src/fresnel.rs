@@ -586,10 +586,10 @@ pub fn schlick_f82_rgb<T: Real>(f0: V3<T>, f82_tint: V3<T>, cos_theta: T) -> V3<
     )
 }
 
-/// Gauss-Legendre nodes and weights on [0, 1], 24 points (computed to double precision by
-/// Newton iteration on P_24; 24 points integrate polynomials of degree 47 exactly).
-fn gauss_legendre_24() -> ([f64; 24], [f64; 24]) {
-    const N: usize = 24;
+/// Gauss-Legendre nodes and weights on [0, 1], `N` points (computed to double precision by
+/// Newton iteration on P_N from Tricomi's initial guesses; N points integrate polynomials of
+/// degree 2N - 1 exactly). Shared by the Fresnel averages here and `ibl::energy`'s tables.
+pub(crate) fn gauss_legendre_01<const N: usize>() -> ([f64; N], [f64; N]) {
     let mut x = [0.0; N];
     let mut w = [0.0; N];
     for i in 0..N {
@@ -631,7 +631,7 @@ pub fn average_dielectric(eta: f64) -> f64 {
     if !valid_eta(eta) {
         return f64::NAN;
     }
-    let (x, w) = gauss_legendre_24();
+    let (x, w) = gauss_legendre_01::<24>();
     // cos of the critical angle: sqrt(1 - eta^2) for eta < 1.
     let mu_c = if eta < 1.0 {
         libm::sqrt((1.0 - eta) * (1.0 + eta))

@@ -146,41 +146,13 @@ pub fn e_ggx_estimate(mu: f64, alpha: f64, samples: u32) -> f64 {
     sum / n
 }
 
-/// Gauss-Legendre nodes and weights on [0, 1], 32 points (Newton iteration on P_32 from
-/// Tricomi's initial guesses; exact for polynomials of degree 63).
-fn gauss_legendre_32() -> ([f64; 32], [f64; 32]) {
-    const N: usize = 32;
-    let (mut x, mut w) = ([0.0; N], [0.0; N]);
-    for i in 0..N {
-        let mut z = libm::cos(core::f64::consts::PI * (i as f64 + 0.75) / (N as f64 + 0.5));
-        let mut dp = 1.0;
-        for _ in 0..100 {
-            let (mut p0, mut p1) = (1.0, z);
-            for n in 2..=N {
-                let p2 = ((2 * n - 1) as f64 * z * p1 - (n - 1) as f64 * p0) / n as f64;
-                p0 = p1;
-                p1 = p2;
-            }
-            dp = N as f64 * (z * p1 - p0) / (z * z - 1.0);
-            let dz = p1 / dp;
-            z -= dz;
-            if dz.abs() < 1e-16 {
-                break;
-            }
-        }
-        x[i] = 0.5 * (1.0 - z);
-        w[i] = 1.0 / ((1.0 - z * z) * dp * dp);
-    }
-    (x, w)
-}
-
 /// Average albedo E_avg(alpha) = 2 integral_0^1 E(mu, alpha) mu dmu, with E from
 /// [`e_ggx_estimate`] (`samples` each) at the 32 Gauss-Legendre nodes of x = sqrt(mu)
 /// (E_avg = 4 integral_0^1 E(x^2) x^3 dx: the substitution puts nodes into E's dip at
 /// small mu). Same domain and edges as [`e_ggx_estimate`]. Deterministic.
 #[must_use]
 pub fn e_avg_ggx_estimate(alpha: f64, samples: u32) -> f64 {
-    let (x, w) = gauss_legendre_32();
+    let (x, w) = crate::fresnel::gauss_legendre_01::<32>();
     let mut sum = 0.0;
     for k in 0..x.len() {
         let mu = x[k] * x[k];
@@ -400,7 +372,7 @@ pub fn fresnel_avg_schlick<T: Real>(f0: T, f90: T) -> T {
 /// Fresnel evaluations); per channel for RGB.
 #[must_use]
 pub fn fresnel_avg_conductor(eta: f64, k: f64) -> f64 {
-    let (x, w) = gauss_legendre_32();
+    let (x, w) = crate::fresnel::gauss_legendre_01::<32>();
     let mut sum = 0.0;
     for i in 0..x.len() {
         sum += w[i] * crate::fresnel::conductor(x[i], eta, k) * x[i];
