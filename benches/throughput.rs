@@ -46,8 +46,9 @@
 //! view x, y, z, then light x, y, z, unit vectors with z > 0): it times `ggx_d`, `ggx_d_plain`
 //! (GGX D in working precision, no error-free transformations: a yardstick, not a crate kernel),
 //! `ggx_d_fast`, `beckmann_d`, `beckmann_d_fast`,
-//! `rough_conductor`, `rough_conductor_fast` (from the directions: half vector, cosines, then
-//! the term) and the
+//! `rough_conductor` (from the directions: half vector, cosines, then the term),
+//! `rough_conductor_fast` (the cosines of the half vector by `cook_torrance::half_cosines`,
+//! then the fast term) and the
 //! copy floor on `f32x8` with `std::time::Instant`, after one untimed run of each,
 //! `BRDF_THROUGHPUT_RUNS` times (default 7), and prints one line per run:
 //! `time <kernel> <milliseconds>`. With `BRDF_THROUGHPUT_OUTPUT=<dir>` it also writes each
@@ -376,6 +377,12 @@ fn timing_mode(path: &str) -> Result<(), String> {
         ));
     }
     let n = bytes.len() / 24;
+    if std::env::var("BRDF_FTZ").is_ok() {
+        #[allow(deprecated)]
+        unsafe {
+            core::arch::x86_64::_mm_setcsr(core::arch::x86_64::_mm_getcsr() | 0x8040)
+        };
+    }
     let floats: Vec<f32> = bytes
         .chunks_exact(4)
         .map(|b| f32::from_le_bytes([b[0], b[1], b[2], b[3]]))
@@ -395,37 +402,37 @@ fn timing_mode(path: &str) -> Result<(), String> {
         (
             "ggx_d",
             Box::new(|o: &mut [f32]| {
-                let _ = batch::run_f32([a[2]], [o], |[z]| [ggx::d(z, alpha)]);
+                let _ = batch::run_f32([a[2]], [o], move |[z]| [ggx::d(z, alpha)]);
             }),
         ),
         (
             "ggx_d_plain",
             Box::new(|o: &mut [f32]| {
-                let _ = batch::run_f32([a[2]], [o], |[z]| [ggx_d_plain(z, alpha)]);
+                let _ = batch::run_f32([a[2]], [o], move |[z]| [ggx_d_plain(z, alpha)]);
             }),
         ),
         (
             "ggx_d_fast",
             Box::new(|o: &mut [f32]| {
-                let _ = batch::run_f32([a[2]], [o], |[z]| [ggx::d_fast(z, alpha)]);
+                let _ = batch::run_f32([a[2]], [o], move |[z]| [ggx::d_fast(z, alpha)]);
             }),
         ),
         (
             "beckmann_d",
             Box::new(|o: &mut [f32]| {
-                let _ = batch::run_f32([a[2]], [o], |[z]| [beckmann::d(z, alpha)]);
+                let _ = batch::run_f32([a[2]], [o], move |[z]| [beckmann::d(z, alpha)]);
             }),
         ),
         (
             "beckmann_d_fast",
             Box::new(|o: &mut [f32]| {
-                let _ = batch::run_f32([a[2]], [o], |[z]| [beckmann::d_fast(z, alpha)]);
+                let _ = batch::run_f32([a[2]], [o], move |[z]| [beckmann::d_fast(z, alpha)]);
             }),
         ),
         (
             "rough_conductor",
             Box::new(|o: &mut [f32]| {
-                let _ = batch::run_f32(a, [o], |[vx, vy, vz, lx, ly, lz]| {
+                let _ = batch::run_f32(a, [o], move |[vx, vy, vz, lx, ly, lz]| {
                     let (v, l) = (V3::new(vx, vy, vz), V3::new(lx, ly, lz));
                     let s = v + l;
                     let h = s * s.length().recip();
@@ -438,13 +445,11 @@ fn timing_mode(path: &str) -> Result<(), String> {
         (
             "rough_conductor_fast",
             Box::new(|o: &mut [f32]| {
-                let _ = batch::run_f32(a, [o], |[vx, vy, vz, lx, ly, lz]| {
+                let _ = batch::run_f32(a, [o], move |[vx, vy, vz, lx, ly, lz]| {
                     let (v, l) = (V3::new(vx, vy, vz), V3::new(lx, ly, lz));
-                    let s = v + l;
-                    let h = s * s.length().recip();
-                    let vh = v.dot(h);
+                    let (nh, vh) = cook_torrance::half_cosines(v, l);
                     let f = fresnel::conductor_fast(vh, eta, k);
-                    [fast_term(h.z, vz, lz, alpha, f) * lz.saturate()]
+                    [fast_term(nh, vz, lz, alpha, f) * lz.saturate()]
                 });
             }),
         ),

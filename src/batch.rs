@@ -26,6 +26,14 @@
 //! lane type, scalars included (to compare a lane path against its scalar path on the same
 //! data).
 //!
+//! Speed: write the kernel as a `move` closure when it captures parameters (`move |[c]|
+//! [fresnel::conductor_fast(c, eta, k)]`). A closure that borrows them makes the compiler
+//! reload them after every store to an output (it cannot prove that the output slices, which
+//! reach the loop inside an array, do not alias them) and redo for every group the work that
+//! depends on them alone: a rough conductor with constant eta and k took 1.3x as long
+//! borrowed as moved (`benches/throughput.rs`, timing mode, native build). The loop itself
+//! has no bounds check, so that work is hoisted out of it once the parameters are values.
+//!
 //! The tail: when the length is not a multiple of the lane count, the last group is loaded
 //! with its missing lanes set to the group's last element (a valid input, so a kernel sees
 //! no value the caller did not give), evaluated, and only the real elements are stored.
@@ -46,8 +54,8 @@ use wide::{f32x8, f64x4};
 /// input's (or, with no input, the first output's).
 pub fn run<T: Real, const I: usize, const O: usize>(
     inputs: [&[T::Scalar]; I],
-    mut outputs: [&mut [T::Scalar]; O],
-    mut kernel: impl FnMut([T; I]) -> [T; O],
+    outputs: [&mut [T::Scalar]; O],
+    kernel: impl FnMut([T; I]) -> [T; O],
 ) -> Result<usize, ParamError> {
     let n = match (inputs.first(), outputs.first()) {
         (Some(s), _) => s.len(),
@@ -66,37 +74,84 @@ pub fn run<T: Real, const I: usize, const O: usize>(
             expected: "slices of the inputs' length",
         });
     }
-    let lanes = T::LANES;
-    let full = n - n % lanes;
-    let mut base = 0;
-    while base < full {
-        let x: [T; I] = core::array::from_fn(|k| {
-            let s = &inputs[k][base..base + lanes];
-            T::from_fn(|l| s[l])
-        });
-        let y = kernel(x);
-        for (out, v) in outputs.iter_mut().zip(y) {
-            let s = &mut out[base..base + lanes];
-            for (l, e) in s.iter_mut().enumerate() {
-                *e = v.lane(l);
-            }
-        }
-        base += lanes;
-    }
-    let rem = n - full;
-    if rem > 0 {
-        let x: [T; I] = core::array::from_fn(|k| {
-            let s = &inputs[k][full..];
-            T::from_fn(|l| s[l.min(rem - 1)])
-        });
-        let y = kernel(x);
-        for (out, v) in outputs.iter_mut().zip(y) {
-            for (l, e) in out[full..].iter_mut().enumerate() {
-                *e = v.lane(l);
-            }
-        }
+    match T::LANES {
+        8 => groups::<T, 8, I, O>(n, inputs, outputs, kernel),
+        4 => groups::<T, 4, I, O>(n, inputs, outputs, kernel),
+        _ => groups::<T, 1, I, O>(n, inputs, outputs, kernel),
     }
     Ok(n)
+}
+
+/// A slice as whole groups of N elements and the tail.
+type Part<'a, S, const N: usize> = (&'a [[S; N]], &'a [S]);
+/// A mutable slice as whole groups of N elements and the tail.
+type PartMut<'a, S, const N: usize> = (&'a mut [[S; N]], &'a mut [S]);
+
+/// The loop of [`run`] for `N = T::LANES` elements per group, over slices of length `n`
+/// (checked by the caller). The slices are viewed as arrays of `[T::Scalar; N]` cut to the
+/// same number of whole groups before the loop, so indexing them by group needs no bounds
+/// check: the loop has no panic path, and LLVM hoists whatever the kernel computes from
+/// loop-invariant arguments (a constant alpha, eta and k) out of it. With a check (and its
+/// panic) in the loop, `wide`'s x86 intrinsics may not be moved above it, and a rough
+/// conductor redid its per-(eta, k) work, half its time, for every group.
+#[inline]
+fn groups<T: Real, const N: usize, const I: usize, const O: usize>(
+    n: usize,
+    inputs: [&[T::Scalar]; I],
+    outputs: [&mut [T::Scalar]; O],
+    mut kernel: impl FnMut([T; I]) -> [T; O],
+) {
+    debug_assert_eq!(N, T::LANES);
+    let g = n / N;
+    // Whole groups, each slice cut to exactly g of them (`split_at_checked` cannot fail for
+    // slices of length n; the early return keeps a panic path out of the function).
+    let mut ins: [Part<'_, T::Scalar, N>; I] = [(&[], &[]); I];
+    for (slot, s) in ins.iter_mut().zip(inputs) {
+        let (whole, tail) = s.as_chunks::<N>();
+        let Some((whole, _)) = whole.split_at_checked(g) else {
+            return;
+        };
+        *slot = (whole, tail);
+    }
+    let mut outs: [PartMut<'_, T::Scalar, N>; O] =
+        core::array::from_fn(|_| (Default::default(), Default::default()));
+    for (slot, s) in outs.iter_mut().zip(outputs) {
+        let (whole, tail) = s.as_chunks_mut::<N>();
+        let Some((whole, _)) = whole.split_at_mut_checked(g) else {
+            return;
+        };
+        *slot = (whole, tail);
+    }
+    let pad = [T::Scalar::ZERO; N];
+    let mut sink = [T::Scalar::ZERO; N];
+    for j in 0..g {
+        // `get` with a fallback rather than indexing: j < g always holds, and no bounds check
+        // (with its panic) enters the loop; the fallbacks compile to selects.
+        let x: [T; I] = core::array::from_fn(|k| {
+            let c = ins[k].0.get(j).unwrap_or(&pad);
+            T::from_fn(|l| c[l % N])
+        });
+        let y = kernel(x);
+        for (out, v) in outs.iter_mut().zip(y) {
+            let c = out.0.get_mut(j).unwrap_or(&mut sink);
+            for (l, e) in c.iter_mut().enumerate() {
+                *e = v.lane(l);
+            }
+        }
+    }
+    let rem = n - g * N;
+    if rem > 0 {
+        let x: [T; I] = core::array::from_fn(|k| {
+            let s = ins[k].1;
+            T::from_fn(|l| s.get(l.min(rem - 1)).copied().unwrap_or(T::Scalar::ZERO))
+        });
+        let y = kernel(x);
+        for (out, v) in outs.into_iter().zip(y) {
+            for (l, e) in out.1.iter_mut().enumerate() {
+                *e = v.lane(l);
+            }
+        }
+    }
 }
 
 /// [`run`] on `f32x8` lanes over `f32` slices.

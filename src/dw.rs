@@ -25,7 +25,7 @@ use crate::real::Real;
 
 /// True for a 24-bit significand (f32 and its lanes), false for 53 bits (f64 and its lanes).
 #[inline]
-fn single<T: Real>() -> bool {
+pub(crate) fn single<T: Real>() -> bool {
     let eps: f64 = T::EPSILON.lane(0).into();
     eps > 1e-10
 }

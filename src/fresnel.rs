@@ -43,7 +43,7 @@
 //! enters as a ratio of two positive sums that damps its own roundings by half.
 
 use crate::domain::{in_unit, nan_unless};
-use crate::dw::{Dw, pow2_nearest, two_sum};
+use crate::dw::{Dw, pow2_nearest, single, two_sum};
 use crate::real::Real;
 use crate::vec3::V3;
 
@@ -410,89 +410,141 @@ pub fn conductor<T: Real>(cos_theta_i: T, eta: T, k: T) -> T {
 /// N = eta + i k (Born and Wolf, section 14.2), in the same cancellation-free arrangement,
 /// with u = N^2 - 1, s = sqrt(N^2 - sin^2 theta_i) (principal complex root), s2 = (1 - c)(1 + c):
 ///
-/// F = |u|^2 / |c + s|^4 * A / (A + B), A = c^2 |s|^2 + s2^2, B = 2 c s2 Re(s),
+/// F = |u|^2 A / (|c + s|^4 (A + B)), A = c^2 |s|^2 + s2^2, B = 2 c s2 Re(s),
+/// |c + s|^2 = c (c + 2 Re(s)) + |s|^2, |s|^2 = |N^2 - s2|
 ///
-/// (the r_perp = -u / (c + s)^2 form of Lagarde 2013, "Memo on Fresnel equations", and of
-/// pbrt-v4's `FrComplex` folded into one ratio), but every quantity rounded in working
-/// precision: no double words, no Newton step on s. Re(N^2) - 1 is (eta - 1)(eta + 1) - k^2, so
-/// N near 1 keeps its digits. The same scalings as [`conductor`] (N divided by max(eta, k)
-/// above 2^16, raised to T::EPSILON^2 below it, c + s scaled by a power of two before its
-/// fourth power) keep every finite input finite.
+/// (r_perp = -u / (c + s)^2 as in Lagarde 2013, "Memo on Fresnel equations", and pbrt-v4's
+/// `FrComplex`; |r_par|^2 = |r_perp|^2 (A - B) / (A + B); both folded into one ratio), every
+/// quantity rounded in working precision: no double words, no Newton step on s. Only |s|^2
+/// and Re(s) are needed, and every sum above adds non-negative terms; Re(N^2) - 1 is
+/// (eta - 1)(eta + 1) - k^2, so N near 1 keeps its digits. Cost per cosine: two square roots
+/// (|s|^2, then Re(s)), two divisions (Re(s) where Re(N^2) < s2, taken alongside the second
+/// root, and the final ratio) and about 40 other operations, once the part that depends on
+/// eta and k alone (one more division, about 60 operations) is computed, which a loop over
+/// cosines with fixed eta and k can do once.
+///
+/// Scalings, chosen from eta and k alone: N is divided by sigma = max(eta, k) above 2^16 and
+/// raised to T::EPSILON^2 below it, as in [`conductor`], A and B then being formed from the
+/// scaled s with rho = c sigma in place of c (capped at T::EPSILON^-2, where A / (A + B)
+/// already rounds to 1). The others are by powers of two (they round nothing): N^2 - s2
+/// before its modulus is squared, and, where |u| < 2^-40 (f32) / 2^-400 (f64), i.e. eta = 1
+/// and k tiny, |u| and |c + s|^2 (then between |u| and 4) before they are squared. No square
+/// overflows, and none underflows while k is above 2^-124 (f32) / 2^-1017 (f64).
 ///
 /// Domain, edges and bad input exactly as [`conductor`]: eta in (0, MAX], k in [0, MAX], both
-/// finite, give a finite F in [0, 1]; cos_theta_i clamped to [0, 1]; c = 0 gives 1; eta = 1,
-/// k = 0 gives 0; NaN in any input, eta <= 0, k < 0 and infinite eta or k give NaN.
+/// finite, give a finite F in [0, 1]; cos_theta_i clamped to [0, 1]; c = 0 gives 1 (set
+/// there: the ratio is |u|^2 / |s|^4 = 1 only to rounding); eta = 1, k = 0 gives 0 (u = 0), at
+/// c = 0 too. NaN in any input, eta <= 0, k < 0 and infinite eta or k give NaN.
 ///
-/// Accuracy: about 90 flops (two square roots, six divisions) against 370 for
-/// [`conductor`]. Max error against [`conductor`] over cosines from 0 through 1e-7 to 1, eta
-/// and k on log grids from 1e-3 to 1e6 plus eta near 1, tiny and huge eta and k (up to 3e38),
-/// 530 000 points per type: 15 ULP, relative 9.0e-7 (f32); 15 ULP, relative 1.7e-15 (f64),
-/// where a 1-ULP change of the cosine moves F by at most 8 ULP; elsewhere (k = 0 near the
-/// critical angle) within 1.0 (f32) / 1.3 (f64) of that change. The same on f32x8 and f64x4,
-/// whose lanes equal the scalar results bit for bit (`cargo test --all-features --test
-/// fast_variants -- --nocapture`, default x86-64 build).
+/// Accuracy: max error against [`conductor`] over cosines from 0 through 1e-7 to 1, eta and k
+/// on log grids from 1e-3 to 1e6 plus eta near 1, tiny and huge eta and k (up to 3e38), and
+/// eta = 1 with k from 1e-36 to 1e-12 at cosines down to 1e-30, 533 000 points per type:
+/// 10 ULP, relative 6.0e-7 (f32); 12 ULP, relative 1.3e-15 (f64), where a 1-ULP change of the
+/// cosine moves F by at most 8 ULP; elsewhere (k = 0 near the critical angle) within 0.67
+/// (f32) / 1.0 (f64) of that change. The same on f32x8 and f64x4, whose lanes equal the
+/// scalar results bit for bit (`cargo test --all-features --test fast_variants --
+/// --nocapture`, default x86-64 build). Not accurate (but finite, in [0, 1]) for eta = 1
+/// exactly with 0 < k < 2^-124 (f32) / 2^-1017 (f64) at cosines below about sqrt(k), where
+/// |Im(N^2 - s2)| = 2 k is raised to 2^-123 / 2^-1016.
 #[inline]
 #[must_use]
 pub fn conductor_fast<T: Real>(cos_theta_i: T, eta: T, k: T) -> T {
-    let c = cos_theta_i.saturate();
-    let s2 = (T::ONE - c) * (T::ONE + c);
-    // The scaling of `conductor`: N / sigma, m = 1 / sigma.
+    // Everything before `c` depends on eta and k alone: in a loop over cosines with fixed
+    // eta and k it is computed once.
+    // Valid: eta > 0 and k >= 0 (both false for NaN), max(eta, k) finite.
     let big = eta.max(k);
+    let ok = eta.simd_gt(T::ZERO) & k.simd_ge(T::ZERO) & big.simd_le(T::MAX);
+    // The scaling of `conductor`: N / sigma, m = 1 / sigma, one quotient: 1 / max(eta, k)
+    // above 2^16, EPSILON^2 / max(eta, k) below EPSILON^2 (finite for subnormal eta and k),
+    // else 1. An invalid eta or k may make these infinite or NaN: F is NaN there regardless.
     let large = big.simd_gt(T::splat(CONDUCTOR_SCALE_HI));
     let tiny_bound = T::EPSILON * T::EPSILON;
     let tiny = big.simd_lt(tiny_bound);
-    let safe_big = T::select(big.simd_gt(T::ZERO), big, T::ONE);
-    // One division: the scale factor, then products.
-    let inv = safe_big.recip();
-    let up = tiny_bound * inv;
-    let (re, im, m) = (
-        T::select(large, eta * inv, T::select(tiny, eta * up, eta)),
-        T::select(large, k * inv, T::select(tiny, k * up, k)),
-        T::select(large, inv, T::ONE),
+    let n_scale = T::select(tiny, tiny_bound, T::ONE) / T::select(large | tiny, big, T::ONE);
+    let (re, im) = (eta * n_scale, k * n_scale);
+    let (m, sigma) = (
+        T::select(large, n_scale, T::ONE),
+        T::select(large, big, T::ONE),
     );
-    let cm = c * m;
-    let m2 = m * m;
+    let neg_m2 = -(m * m);
     let n2_re = re.mul_add(re, -(im * im));
     // u = N^2 - m^2 with (re - m)(re + m): no cancellation for eta near 1.
     let u_re = (re - m).mul_add(re + m, -(im * im));
     let u_im = T::TWO * re * im;
-    // z = s^2 = N^2 - s2 m^2, as u + (c m)^2 or as N^2 - s2 m^2, whichever adds the smaller
-    // terms (as in `conductor`).
-    let s2m2 = s2 * m2;
+    // Two regimes, told apart by |u| alone, each with its own powers of two (exact scalings):
+    // z = s^2 is scaled by 2^(2j - 1) before its modulus is squared, and u and |c + s|^2 by
+    // `lift` before they are squared.
+    // - |u| >= 2^-40 (f32) / 2^-400 (f64): |z| <= 2^34, so 2^(2j - 1) = 2^27 / 2^475 keeps
+    //   every square finite (and parts down to 2^-90 / 2^-986 normal: smaller ones occur only
+    //   near the critical angle, where |z| and Re s are negligible against c^2 and s2^2), and
+    //   |c + s|^2 >= |u| (u = (s - c m)(s + c m), Re s >= 0) keeps |u|^2 and |c + s|^4 normal
+    //   wherever F >= 2^-100 without a lift.
+    // - |u| < 2^-40 / 2^-400 (eta = 1 exactly, k below 2^-41 / 2^-401): |z| >= |Im z| = 2k
+    //   (about |u|), |z| <= 1 + |u| and |c + s|^2 lies within [|u|, 4 (1 + |u|)], so 2^63 /
+    //   2^509 for z and a lift of 2^61 / 2^509 keep every square, and |c + s|^4 (A + B)
+    //   (A + B <= 2), finite and normal for k down to 2^-124 / 2^-1017.
+    let u_abs2 = u_re.mul_add(u_re, u_im * u_im);
+    let (small_u2, [j_hi, j_lo], lift_exp) = if single::<T>() {
+        (pow2(-80), [32, 14], 61)
+    } else {
+        (pow2(-800), [255, 238], 509)
+    };
+    let lifted = u_abs2.simd_lt(T::splat(small_u2));
+    let by = |hi: f64, lo: f64| T::select(lifted, T::splat(hi), T::splat(lo));
+    let z_up = by(pow2(2 * j_hi - 1), pow2(2 * j_lo - 1));
+    let z_down = by(pow2(1 - 2 * j_hi), pow2(1 - 2 * j_lo));
+    let t_down = by(pow2(-j_hi), pow2(-j_lo));
+    let lift = by(pow2(lift_exp), 1.0);
+    let (ul_re, ul_im) = (u_re * lift, u_im * lift);
+    let ul_abs2 = ul_re.mul_add(ul_re, ul_im * ul_im);
+    let (ml, zl_down) = (m * lift, z_down * lift);
+    // In the second regime |Im z| is raised to 2^-123 / 2^-1016 (as if k were at least
+    // 2^-124 / 2^-1017), which keeps |c + s|^4 normal, above 0, even for u = 0.
+    let b = (u_im.abs() * z_up).max(by(pow2(if single::<T>() { -60 } else { -507 }), 0.0));
+    let b2 = b * b;
+    let g_num = (b + b) * t_down;
+    let g_pos = T::TWO * t_down;
+    // F at c = 0, where the ratio below is |u|^2 / |s|^4 = 1 only to rounding: 1, except for
+    // eta = 1, k = 0 (no interface: 0 at every angle, as in `conductor`); NaN for invalid
+    // eta or k.
+    let no_interface = u_re.simd_eq(T::ZERO) & u_im.simd_eq(T::ZERO);
+    let at_grazing = nan_unless(ok, T::select(no_interface, T::ZERO, T::ONE));
+
+    let c = cos_theta_i.saturate();
+    let s2 = (T::ONE - c) * (T::ONE + c);
+    let cm = c * m;
+    let cm2 = cm * cm;
+    // z = s^2 = N^2 - s2 m^2 = u + (c m)^2, from whichever form adds the smaller terms
+    // (|u_re| + (c m)^2 against |Re N^2| + s2 m^2): u + (c m)^2 where (c m)^2 <= Re N^2
+    // (N near 1 at any angle), else Re N^2 - s2 m^2 (small or mostly imaginary N, where
+    // u + (c m)^2 would cancel).
     let z_re = T::select(
-        (u_re.abs() + cm * cm).simd_le(n2_re.abs() + s2m2),
+        cm2.simd_le(n2_re),
         cm.mul_add(cm, u_re),
-        n2_re - s2m2,
+        s2.mul_add(neg_m2, n2_re),
     );
-    let (s_re, s_im) = complex_sqrt_fast(z_re, u_im);
-    let s_abs2 = s_re.mul_add(s_re, s_im * s_im);
-    // |r_perp|^2 = |u|^2 / |p|^4, p = c m + s, scaled by the power of two nearest
-    // 1 / max(|Re p|, |Im p|) (u by its square; |u| <= |p|^2) so neither power under- or
-    // overflows; 0 where p = 0 (then u = 0 too).
-    let p_re = cm + s_re;
-    let lambda = pow2_nearest(p_re.abs().max(s_im.abs()))
-        .max(T::MIN_POSITIVE)
-        .recip();
-    let (p_re, p_im) = (p_re * lambda, s_im * lambda);
-    let (u_re, u_im) = (u_re * lambda * lambda, u_im * lambda * lambda);
-    let p_abs2 = p_re.mul_add(p_re, p_im * p_im);
-    let p_abs4 = p_abs2 * p_abs2;
-    let has_p = p_abs4.simd_gt(T::ZERO);
-    let rs = T::select(
-        has_p,
-        u_re.mul_add(u_re, u_im * u_im) / T::select(has_p, p_abs4, T::ONE),
-        T::ZERO,
-    );
-    // A / (A + B) in units divided by tau = max(c, m), as in `conductor`.
-    let inv_tau = c.max(m).recip();
-    let (ch, s2mh) = (c * inv_tau, s2 * (m * inv_tau));
-    let a = (ch * ch).mul_add(s_abs2, s2mh * s2mh);
-    let ab = T::TWO * ch * s2mh * s_re + a;
-    let pos = ab.simd_gt(T::ZERO);
-    let q = T::select(pos, a / T::select(pos, ab, T::ONE), T::ONE);
-    let f = (rs * q).min(T::ONE);
-    let ok = valid_eta(eta) & k.simd_ge(T::ZERO) & k.simd_le(T::MAX) & !cos_theta_i.is_nan();
-    nan_unless(ok, f)
+    // s = sqrt(z) (principal root; Press et al., "Numerical Recipes", section 5.5): with
+    // a = |Re z|, b = |Im z| scaled by 2^(2j - 1) (above),
+    // |s|^2 = |z| = norm 2^(1 - 2j), t = sqrt(norm + a) = sqrt((|z| + a) / 2) 2^j, and
+    // 2 Re(s) = 2 t 2^-j for Re z >= 0, b / t = t 2^-j 2 b / (|z| + a) otherwise (no
+    // cancellation): 2 Re(s) = g t, g taken alongside the second root rather than after it.
+    let a = z_re.abs() * z_up;
+    let norm = a.mul_add(a, b2).sqrt();
+    let sum = norm + a;
+    let t = sum.sqrt();
+    // sum > 0 wherever Re z < 0: the quotient is only used where it is defined.
+    let g = T::select(z_re.simd_ge(T::ZERO), g_pos, g_num / sum);
+    let s_abs2 = norm * z_down;
+    // lift |p|^2 = lift |c m + s|^2 = lift (c m (c m + 2 Re s) + |s|^2).
+    let pl_abs2 = (c * ml).mul_add(g.mul_add(t, cm), norm * zl_down);
+    // A = rho^2 |s|^2 + s2^2, B = rho s2 2 Re(s) with s in units of m (rho = c / m = c sigma;
+    // where rho is capped, A / (A + B) rounds to 1 regardless).
+    let rho = (c * sigma).min(tiny_bound.recip());
+    let a_par = (rho * rho).mul_add(s_abs2, s2 * s2);
+    let ab = (rho * s2 * g).mul_add(t, a_par);
+    let ratio = (ul_abs2 * a_par) / (pl_abs2 * pl_abs2 * ab);
+    // A NaN cosine fails `c <= 0` and reaches F through the ratio.
+    T::select(ok & !c.simd_le(T::ZERO), ratio.min(T::ONE), at_grazing)
 }
 
 /// [`conductor`] per channel for RGB eta and k (x = r, y = g, z = b).
@@ -530,24 +582,9 @@ fn complex_sqrt<T: Real>(re: T, im: T) -> (T, T) {
     (out_re, out_im_mag.copysign(im))
 }
 
-/// Principal square root of re + i im in working precision for [`conductor_fast`]:
-/// t = sqrt((|z| + |re|) / 2) and |im| / (2 t) (Press et al., "Numerical Recipes", section
-/// 5.5), with |z| = M sqrt(1 + (m / M)^2) (M, m the larger and smaller part) always, so that
-/// parts too small to square (down to the scaled N of `conductor`'s tiny case) need no second
-/// path. Two divisions and two square roots, against [`complex_sqrt`]'s three and five.
-#[inline]
-fn complex_sqrt_fast<T: Real>(re: T, im: T) -> (T, T) {
-    let (a, b) = (re.abs(), im.abs());
-    let big = a.max(b);
-    let has = big.simd_gt(T::ZERO);
-    let r = a.min(b) / T::select(has, big, T::ONE);
-    let t = (T::HALF * big.mul_add(r.mul_add(r, T::ONE).sqrt(), a)).sqrt();
-    let other = T::select(has, b / (T::TWO * T::select(has, t, T::ONE)), T::ZERO);
-    let non_neg = re.simd_ge(T::ZERO);
-    (
-        T::select(non_neg, t, other),
-        T::select(non_neg, other, t).copysign(im),
-    )
+/// 2^e as an f64, exactly, for -1022 <= e <= 1023.
+const fn pow2(e: i32) -> f64 {
+    f64::from_bits(((1023 + e) as u64) << 52)
 }
 
 /// The cosine mu_bar = 1/7 (theta = 81.8 degrees) at which the F82-tint model is pinned: the

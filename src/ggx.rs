@@ -237,9 +237,10 @@ pub fn d<T: Real>(n_dot_h: T, alpha: T) -> T {
 /// D = alpha^2 / (pi ((n.h)^2 (alpha^2 - 1) + 1)^2), evaluated as real-time engines do
 /// (Filament's `D_GGX`, Guy and Agopian 2018, "Physically Based Rendering in Filament"):
 /// k = alpha / ((1 - c)(1 + c) + (c alpha)^2), D = k^2 / pi, for c = n_dot_h in (0, 1], 0 for
-/// c <= 0 (Walter et al. 2007 eq. 33). sin^2 is the product (1 - c)(1 + c), not 1 - c^2, so the
-/// denominator never cancels near c = 1 (where 1 - c^2 in working precision keeps no digit of
-/// alpha^2 for alpha below about 2^-12 in f32).
+/// c <= 0 (Walter et al. 2007 eq. 33). sin^2 is 1 - c^2 in one fused multiply-add on targets
+/// with FMA, otherwise 1 - c c below c = 1/2 and the product (1 - c)(1 + c) above, never
+/// 1 - c^2 with two roundings, so the denominator does not cancel near c = 1 (where that form
+/// keeps no digit of alpha^2 for alpha below about 2^-12 in f32).
 ///
 /// Domain, edges and bad input exactly as [`d`]: n_dot_h in [-1, 1] (above 1 clamped to 1),
 /// alpha in [0, +inf) finite, clamped to [ALPHA_MIN, ALPHA_MAX] (the width, not perceptual
@@ -258,13 +259,7 @@ pub fn d_fast<T: Real>(n_dot_h: T, alpha: T) -> T {
     let a = clamp_alpha(alpha);
     let c = n_dot_h.min(T::ONE);
     let ca = c * a;
-    // sin^2 in the fewest roundings: 1 - c^2 below c = 1/2 (>= 3/4, nothing cancels), the
-    // product (1 - c)(1 + c) above (1 - c exact there).
-    let s2 = T::select(
-        c.simd_lt(T::HALF),
-        (-c).mul_add(c, T::ONE),
-        sin2_from_cos(c),
-    );
+    let s2 = crate::microfacet::sin2_working(c);
     let k = a / ca.mul_add(ca, s2);
     let d = (k * k * T::FRAC_1_PI).min(T::MAX);
     nan_where(a.is_nan(), above(n_dot_h, d))

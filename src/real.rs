@@ -4,7 +4,8 @@
 //! `f64` lanes, from the [`wide`] crate, re-exported as `brdf::wide`). A kernel written once
 //! as `fn d<T: Real>(n_dot_h: T, alpha: T) -> T` runs on one value or on eight lanes at a
 //! time. Branches on lane values become [`Real::select`] on a [`Mask`] (`bool` for scalars,
-//! an all-ones/all-zeros lane mask for SIMD types).
+//! an all-ones/all-zeros lane mask for SIMD types). The trait is sealed: those four types are
+//! its only implementations (the kernels rely on crate-internal operations of each).
 //!
 //! [`f32x8`]: https://docs.rs/wide/1/wide/struct.f32x8.html
 //! [`f64x4`]: https://docs.rs/wide/1/wide/struct.f64x4.html
@@ -68,6 +69,7 @@
 //! |---|---|---|---|
 //! | `sqrt`, `recip`, `abs`, `floor`, `min`, `max`, `copysign`, `mul_add` | 0 ULP | 0 ULP | IEEE instructions |
 //! | `exp` | 1 ULP | 2 ULP | `wide` polynomial (f32: the same operations, bit-identical, without its data-dependent branches) |
+//! | `exp_ftz` | 1 ULP | 2 ULP | `exp` with results below `MIN_POSITIVE` flushed to 0 (f32: no subnormal intermediate; `tests/lane_exp.rs` checks the definition bit for bit) |
 //! | `exp2` | 1 ULP | 0 ULP | `wide` polynomial (f32), `libm` per lane (f64: `wide` is 1901 ULP off) |
 //! | `ln` | 1 ULP | 1 ULP | `wide` polynomial, subnormals rescaled, negatives give NaN |
 //! | `sin`, `cos` | 1 ULP | 1 ULP | `wide` polynomial for \|x\| <= 1e3, `libm` per lane beyond |
@@ -151,7 +153,8 @@ impl Mask for f64x4 {
 /// `Real::min(a, b)` in concrete code that must behave as the kernels do; the same holds for
 /// `max`, `clamp`, `mul_add` (std's is always fused) and `splat` (see the module docs).
 pub trait Real:
-    Copy
+    sealed::Sealed
+    + Copy
     + Debug
     + Add<Output = Self>
     + Sub<Output = Self>
@@ -266,6 +269,15 @@ pub trait Real:
     fn floor(self) -> Self;
     /// e^self. Lanes: within 1 ULP (f32x8) / 2 ULP (f64x4) of the scalar path.
     fn exp(self) -> Self;
+    /// e^self with every result below the smallest normal number ([`Real::MIN_POSITIVE`])
+    /// flushed to 0, and otherwise equal to [`Real::exp`] bit for bit.
+    ///
+    /// For kernels whose arguments run far into the tail (a Beckmann lobe at grazing angles):
+    /// on f32x8 no lane ever forms a subnormal number, which on x86 costs a microcode assist
+    /// of about a hundred cycles per instruction that meets one. Inputs: any; NaN gives NaN,
+    /// +inf gives +inf, -inf gives 0. Relative error of the flush: results in
+    /// (0, MIN_POSITIVE) become 0, an absolute error below 1.2e-38 (f32) / 2.3e-308 (f64).
+    fn exp_ftz(self) -> Self;
     /// 2^self. Lanes: within 1 ULP (f32x8) / 0 ULP (f64x4) of the scalar path.
     fn exp2(self) -> Self;
     /// Natural logarithm; -inf at 0, NaN below 0. Lanes: within 1 ULP of the scalar path.
@@ -520,6 +532,11 @@ macro_rules! impl_real_scalar {
                 $exp(self)
             }
             #[inline]
+            fn exp_ftz(self) -> Self {
+                let e = $exp(self);
+                if e < $t::MIN_POSITIVE { 0.0 } else { e }
+            }
+            #[inline]
             fn exp2(self) -> Self {
                 $exp2(self)
             }
@@ -685,11 +702,30 @@ macro_rules! impl_real_lanes {
             }
             #[inline]
             fn min(self, o: Self) -> Self {
-                $v::simd_gt(self, o).select(o, self)
+                // x86's minps(a, b) is `a < b ? a : b`, NaN in either giving b: with a = o,
+                // b = self, exactly this method's definition in one instruction (and the
+                // same on `wide`'s portable fallback). Elsewhere (NEON's fmin returns NaN for
+                // a NaN in either) a compare and a select.
+                #[cfg(any(target_arch = "x86", target_arch = "x86_64"))]
+                {
+                    o.fast_min(self)
+                }
+                #[cfg(not(any(target_arch = "x86", target_arch = "x86_64")))]
+                {
+                    $v::simd_gt(self, o).select(o, self)
+                }
             }
             #[inline]
             fn max(self, o: Self) -> Self {
-                $v::simd_lt(self, o).select(o, self)
+                // maxps(o, self) = `o > self ? o : self`, NaN in either giving self.
+                #[cfg(any(target_arch = "x86", target_arch = "x86_64"))]
+                {
+                    o.fast_max(self)
+                }
+                #[cfg(not(any(target_arch = "x86", target_arch = "x86_64")))]
+                {
+                    $v::simd_lt(self, o).select(o, self)
+                }
             }
             #[inline]
             fn mul_add(self, a: Self, b: Self) -> Self {
@@ -720,6 +756,10 @@ macro_rules! impl_real_lanes {
             #[inline]
             fn exp(self) -> Self {
                 exp_lanes(self)
+            }
+            #[inline]
+            fn exp_ftz(self) -> Self {
+                self.exp_ftz_lanes()
             }
             #[inline]
             fn exp2(self) -> Self {
@@ -850,11 +890,16 @@ fn exp_lanes<V: ExpLanes>(v: V) -> V {
 }
 trait ExpLanes {
     fn exp_lanes(self) -> Self;
+    fn exp_ftz_lanes(self) -> Self;
 }
 impl ExpLanes for f32x8 {
     #[inline]
     fn exp_lanes(self) -> Self {
         exp_f32x8(self)
+    }
+    #[inline]
+    fn exp_ftz_lanes(self) -> Self {
+        exp_ftz_f32x8(self)
     }
 }
 impl ExpLanes for f64x4 {
@@ -862,6 +907,34 @@ impl ExpLanes for f64x4 {
     fn exp_lanes(self) -> Self {
         f64x4::exp(self)
     }
+    #[inline]
+    fn exp_ftz_lanes(self) -> Self {
+        let e = f64x4::exp(self);
+        e.simd_lt(f64x4::splat(f64::MIN_POSITIVE))
+            .select(f64x4::ZERO, e)
+    }
+}
+
+/// The core of the f32 lane exp: r = round(x log2 e) and z = e^y for y = x - r ln 2 (Cody-Waite,
+/// ln 2 split in two f32 parts), e^y = 1 + y + y^2 P(y) with the degree-5 Taylor P; e^x is
+/// z 2^r. The same operations as `wide::f32x8::exp`.
+#[inline]
+fn exp_reduced(xs: f32x8) -> (f32x8, f32x8) {
+    let r = (xs * f32x8::LOG2_E).round_ties_even();
+    let y = r.mul_neg_add(f32x8::splat(0.693_359_4), xs);
+    let y = r.mul_neg_add(f32x8::splat(-2.121_944_4e-4), y);
+    let y2 = y * y;
+    let y4 = y2 * y2;
+    let p = f32x8::splat(1.0 / 120.0)
+        .mul_add(y, f32x8::splat(1.0 / 24.0))
+        .mul_add(
+            y2,
+            f32x8::splat(1.0 / 5040.0)
+                .mul_add(y, f32x8::splat(1.0 / 720.0))
+                .mul_add(y4, f32x8::splat(1.0 / 6.0).mul_add(y, f32x8::splat(0.5))),
+        );
+    let z = p.mul_add(y2, y) + f32x8::ONE;
+    (r, z)
 }
 
 /// e^x on f32 lanes: Cody-Waite reduction x = r ln2 + y (r = round(x log2 e), ln 2 split in two
@@ -880,20 +953,7 @@ fn exp_f32x8(x: f32x8) -> f32x8 {
     let fixed = !(x.simd_ge(min_x) & x.simd_le(max_x));
     let xs = fixed.select(zero, x);
     // r in [-150, 128].
-    let r = (xs * f32x8::LOG2_E).round_ties_even();
-    let y = r.mul_neg_add(f32x8::splat(0.693_359_4), xs);
-    let y = r.mul_neg_add(f32x8::splat(-2.121_944_4e-4), y);
-    let y2 = y * y;
-    let y4 = y2 * y2;
-    let p = f32x8::splat(1.0 / 120.0)
-        .mul_add(y, f32x8::splat(1.0 / 24.0))
-        .mul_add(
-            y2,
-            f32x8::splat(1.0 / 5040.0)
-                .mul_add(y, f32x8::splat(1.0 / 720.0))
-                .mul_add(y4, f32x8::splat(1.0 / 6.0).mul_add(y, f32x8::splat(0.5))),
-        );
-    let z = p.mul_add(y2, y) + f32x8::ONE;
+    let (r, z) = exp_reduced(xs);
     let big = r.simd_gt(f32x8::splat(127.0));
     let sub = r.simd_lt(f32x8::splat(-126.0));
     let k = big.select(f32x8::ONE, sub.select(f32x8::splat(-64.0), zero));
@@ -914,5 +974,129 @@ fn exp_f32x8(x: f32x8) -> f32x8 {
     fixed.select(special, z)
 }
 
+/// [`exp_f32x8`] with results below 2^-126 flushed to 0, built so that no lane ever holds a
+/// subnormal number: the argument clamped, the same reduction and polynomial (the same bits
+/// wherever the result is normal), then 2^r applied as 2^(r - k) 2^k with k = 1 for r > 0 and -1 otherwise, so that
+/// 2^(r - k) is normal for every r in [-126, 128], and the lanes whose product
+/// z 2^(r - k) < 2^-125 would round into the subnormal range by the final halving are zeroed
+/// before it.
+#[inline]
+fn exp_ftz_f32x8(x: f32x8) -> f32x8 {
+    let zero = f32x8::ZERO;
+    // Clamped (NaN kept: maxps / minps return their second operand for a NaN) to
+    // [-87.5, 88.723]: below -87.5, e^x < 2^-126 and the clamped lane is flushed by the test
+    // below; above 88.723 the clamped value overflows to +inf as e^x does. In between nothing
+    // changes, so r is in [-126, 128].
+    let xs = f32x8::splat(88.723).fast_min(f32x8::splat(-87.5).fast_max(x));
+    let (r, z) = exp_reduced(xs);
+    let up = r.simd_gt(zero);
+    let k = up.select(f32x8::ONE, f32x8::splat(-1.0));
+    // 2^(r - k) from its exponent bits: r - k is in [-125, 127].
+    let biased = (r - k) + f32x8::splat(127.0 + 8_388_608.0);
+    let w = z * f32x8::from_bits(biased.to_bits() << 23_u32);
+    // w >= 2^-125 (normal) wherever k = -1 leaves a normal result; below, 0 before halving.
+    let w = (!up & w.simd_lt(f32x8::splat(2.350_988_7e-38))).select(zero, w);
+    w * up.select(f32x8::TWO, f32x8::HALF)
+}
+
+/// Crate-internal operations of the four lane types: a supertrait of [`Real`] in a private
+/// module, so that outside the crate it can be neither named, implemented nor called, and
+/// `Real` is implemented for `f32`, `f64`, `f32x8` and `f64x4` only.
+pub(crate) mod sealed {
+    /// See the module docs.
+    pub trait Sealed {
+        /// 2^-t for t in [0, 120] (f32 lanes) / [0, 1000] (f64 lanes), a normal number for
+        /// every such t; NaN gives NaN; outside that range unspecified. Scalars and f64 lanes:
+        /// `libm::exp2f` / `libm::exp2`; f32 lanes: within 1 ULP of `libm::exp2f`, no branch,
+        /// no subnormal intermediate (`tests/lane_exp.rs`). For kernels whose exponent is
+        /// known to be small and non-positive (the `_fast` Beckmann D).
+        fn exp2_neg(self) -> Self;
+    }
+    impl Sealed for f32 {
+        #[inline]
+        fn exp2_neg(self) -> Self {
+            libm::exp2f(-self)
+        }
+    }
+    impl Sealed for f64 {
+        #[inline]
+        fn exp2_neg(self) -> Self {
+            libm::exp2(-self)
+        }
+    }
+    impl Sealed for super::f32x8 {
+        #[inline]
+        fn exp2_neg(self) -> Self {
+            super::exp2_neg_f32x8(self)
+        }
+    }
+    impl Sealed for super::f64x4 {
+        #[inline]
+        fn exp2_neg(self) -> Self {
+            super::f64x4::new(self.to_array().map(|t| libm::exp2(-t)))
+        }
+    }
+}
+
+/// 2^-t on f32 lanes for t in [0, 120]: n = round(t), f = n - t in [-1/2, 1/2] (exact), 2^f by
+/// its degree-7 Taylor polynomial in f (coefficients ln(2)^k / k!, truncation below 7.3e-9
+/// relative, 0.12 ULP), times 2^-n built from its exponent bits (n <= 120, so 2^-n is normal).
+#[inline]
+fn exp2_neg_f32x8(t: f32x8) -> f32x8 {
+    let n = t.round_ties_even();
+    let f = n - t;
+    let f2 = f * f;
+    let f4 = f2 * f2;
+    let c = |x: f32| f32x8::splat(x);
+    // 1 + f q, q = (c1 + c2 f) + f^2 (c3 + c4 f) + f^4 ((c5 + c6 f) + f^2 c7) by Estrin: the
+    // one term of size 1 is added last, in a single rounding.
+    let q = c(0.240_226_5).mul_add(f, f32x8::splat(core::f32::consts::LN_2));
+    let q = c(9.618_129e-3).mul_add(f, c(0.055_504_11)).mul_add(f2, q);
+    let h = c(1.525_273_4e-5).mul_add(f2, c(1.540_353e-4).mul_add(f, c(1.333_355_8e-3)));
+    let p = h.mul_add(f4, q).mul_add(f, f32x8::ONE);
+    // 2^-n: biased exponent 127 - n in [7, 127].
+    let biased = c(127.0 + 8_388_608.0) - n;
+    p * f32x8::from_bits(biased.to_bits() << 23_u32)
+}
+
 impl_real_lanes!(f32x8, f32, 8, 32);
 impl_real_lanes!(f64x4, f64, 4, 64);
+
+#[cfg(test)]
+mod tests {
+    use super::sealed::Sealed;
+    use super::*;
+
+    /// The f32-lane 2^-t against `libm::exp2f` on every f32 in [0, 120] spaced by 2^-12 and
+    /// every 97th bit pattern below 1: within 1 ULP, always normal, NaN for NaN.
+    #[test]
+    fn exp2_neg_lanes_within_one_ulp_of_libm() {
+        let mut worst = 0u32;
+        let mut check = |ts: [f32; 8]| {
+            let got = f32x8::new(ts).exp2_neg().to_array();
+            for (t, g) in ts.iter().zip(got) {
+                let want = libm::exp2f(-t);
+                let d = g.to_bits().abs_diff(want.to_bits());
+                assert!(
+                    g.is_normal() && d <= 1,
+                    "2^-{t:e}: {g:e} vs {want:e} ({d} ULP)"
+                );
+                worst = worst.max(d);
+            }
+        };
+        let mut t = 0.0f32;
+        while t <= 120.0 {
+            check(core::array::from_fn(|k| t + k as f32 * (1.0 / 4096.0)));
+            t += 8.0 / 4096.0;
+        }
+        let mut bits = 0u32;
+        while f32::from_bits(bits) < 1.0 {
+            check(core::array::from_fn(|k| {
+                f32::from_bits(bits + 97 * k as u32)
+            }));
+            bits += 97 * 8;
+        }
+        assert!(f32x8::splat(f32::NAN).exp2_neg().to_array()[0].is_nan());
+        assert!(worst <= 1);
+    }
+}

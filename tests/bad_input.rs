@@ -848,6 +848,14 @@ fn cook_torrance_rows<T: Real>(t: &mut Vec<Kernel<T>>) {
         vec![v("wo", WO), v("wi", WI)],
         |x| o4(ct::half_vector(v3(x, 0), v3(x, 3))),
     ));
+    t.push(k(
+        "cook_torrance::half_cosines",
+        vec![v("wo", WO), v("wi", WI)],
+        |x| {
+            let (nh, vh) = ct::half_cosines(v3(x, 0), v3(x, 3));
+            vec![nh, vh]
+        },
+    ));
     #[cfg(feature = "ggx")]
     {
         let g = brdf::ggx::Ggx::new(T::splat(0.3), T::splat(0.5)).unwrap();

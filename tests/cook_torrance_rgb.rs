@@ -448,3 +448,48 @@ fn lanes_equal_scalars() {
         assert!(w[3..].iter().all(|&u| u <= 4), "Beckmann lanes: {w:?}");
     }
 }
+
+/// `half_cosines`: on f32 against the same formulas evaluated in f64 from the same f32
+/// directions (v.h = |s| / 2 is the mean of wo.h and wi.h for any lengths, n.h = s.z / |s|),
+/// including nearly opposite grazing pairs; on f64 against `half_vector` where the two
+/// directions are not nearly opposite (there `half_vector`'s wo.h carries wo's own length
+/// error divided by 1 + wo.wi); the fallback where wo = -wi, NaN for NaN, lanes = scalars.
+#[test]
+fn half_cosines_match_the_half_vector() {
+    let mut pairs = direction_pairs();
+    for k in 1..=40 {
+        // Nearly opposite grazing directions: wo = (cos p, sin p, z), wi = -(cos q, sin q, -z).
+        let (p, dq, z) = (0.1 * f64::from(k), 1e-3 / f64::from(k), 1e-3 * f64::from(k));
+        let a = DVec3::new(p.cos(), p.sin(), z).normalize();
+        let b = DVec3::new(-(p + dq).cos(), -(p + dq).sin(), z).normalize();
+        pairs.push((a, b));
+    }
+    let (mut worst32, mut worst64) = (0u64, 0u64);
+    for &(o, i) in &pairs {
+        let (o32, i32) = (V3::<f32>::from(o.as_vec3()), V3::<f32>::from(i.as_vec3()));
+        let (nh, vh) = ct::half_cosines(o32, i32);
+        let s = o.as_vec3().as_dvec3() + i.as_vec3().as_dvec3();
+        worst32 = worst32
+            .max(ulp32(nh, (s.z / s.length()) as f32))
+            .max(ulp32(vh, (0.5 * s.length()) as f32));
+        let lanes = ct::half_cosines(
+            V3::<f32x8>::broadcast(o32.lane(0)),
+            V3::broadcast(i32.lane(0)),
+        );
+        assert!(same(lanes.0.lane(3), nh) && same(lanes.1.lane(5), vh));
+        if 1.0 + o.dot(i) > 0.01 {
+            let (h, vh) = ct::half_vector(V3::<f64>::from(o), V3::<f64>::from(i));
+            let (nh2, vh2) = ct::half_cosines(V3::<f64>::from(o), V3::<f64>::from(i));
+            worst64 = worst64.max(ulp64(h.z, nh2)).max(ulp64(vh, vh2));
+        }
+    }
+    println!(
+        "half_cosines: {worst32} ULP (f32, against f64), {worst64} ULP (f64, against half_vector)"
+    );
+    assert!(worst64 <= 4 && worst32 <= 2);
+    let z = V3::<f64>::new(0.6, 0.0, 0.8);
+    assert_eq!(ct::half_cosines(z, -z), (1.0, 0.0));
+    let nan = V3::<f64>::new(f64::NAN, 0.0, 1.0);
+    let (a, b) = ct::half_cosines(nan, z);
+    assert!(a.is_nan() && b.is_nan());
+}

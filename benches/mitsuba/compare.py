@@ -23,7 +23,8 @@ repository root. It
      `fresnel::conductor`, both forming the half vector from the two directions;
    - beside each, brdf's working-precision variant against the same Mitsuba time:
      `ggx::d_fast`, `beckmann::d_fast`, and the rough conductor with both `ggx::d_fast` and
-     `fresnel::conductor_fast` (their error against the exact forms is in their docs);
+     `fresnel::conductor_fast`, its half-vector cosines from `cook_torrance::half_cosines`
+     (their error against the exact forms is in their docs);
    - the copy floor: brdf's `copy_from_slice` of one input slice into the output slice;
    - a yardstick row: GGX D in plain working precision (defined in benches/throughput.rs,
      not a brdf kernel), to show what brdf's correctly rounded `ggx::d` costs.
@@ -63,7 +64,7 @@ LABELS = {
     "rough_conductor": "rough conductor: D, G, complex Fresnel, times cos (1 channel)",
     "ggx_d_fast": "GGX D, `ggx::d_fast` (working precision)",
     "beckmann_d_fast": "Beckmann D, `beckmann::d_fast` (working precision)",
-    "rough_conductor_fast": "rough conductor with `d_fast`, `conductor_fast`",
+    "rough_conductor_fast": "rough conductor with `d_fast`, `conductor_fast`, `half_cosines`",
 }
 
 
