@@ -48,7 +48,8 @@
 //! `ggx_d_fast`, `beckmann_d`, `beckmann_d_fast`,
 //! `rough_conductor` (from the directions: half vector, cosines, then the term),
 //! `rough_conductor_fast` (the cosines of the half vector by `cook_torrance::half_cosines`,
-//! then the fast term) and the
+//! then the fast term), `rough_conductor_fast_borrowed` (the same kernel as a closure that
+//! borrows its parameters instead of moving them: see the `batch` module docs) and the
 //! copy floor on `f32x8` with `std::time::Instant`, after one untimed run of each,
 //! `BRDF_THROUGHPUT_RUNS` times (default 7), and prints one line per run:
 //! `time <kernel> <milliseconds>`. With `BRDF_THROUGHPUT_OUTPUT=<dir>` it also writes each
@@ -450,6 +451,20 @@ fn timing_mode(path: &str) -> Result<(), String> {
                     let (nh, vh) = cook_torrance::half_cosines(v, l);
                     let f = fresnel::conductor_fast(vh, eta, k);
                     [fast_term(nh, vz, lz, alpha, f) * lz.saturate()]
+                });
+            }),
+        ),
+        (
+            // The same kernel as a closure that borrows alpha, eta and k: the cost of not
+            // writing `move` (the `batch` module docs).
+            "rough_conductor_fast_borrowed",
+            Box::new(|o: &mut [f32]| {
+                let (alpha, eta, k) = (&alpha, &eta, &k);
+                let _ = batch::run_f32(a, [o], |[vx, vy, vz, lx, ly, lz]| {
+                    let (v, l) = (V3::new(vx, vy, vz), V3::new(lx, ly, lz));
+                    let (nh, vh) = cook_torrance::half_cosines(v, l);
+                    let f = fresnel::conductor_fast(vh, *eta, *k);
+                    [fast_term(nh, vz, lz, *alpha, f) * lz.saturate()]
                 });
             }),
         ),
