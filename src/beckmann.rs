@@ -349,7 +349,9 @@ impl<T: Real> Microfacet<T> for Beckmann<T> {
 }
 
 /// Isotropic Beckmann NDF of n_dot_h: D = exp(-tan^2 / alpha^2) / (pi alpha^2 c^4), with
-/// tan^2 = (1 - c^2) / c^2 (Walter et al. 2007 eq. 25). Peak 1 / (pi alpha^2) at c = 1.
+/// tan^2 = (1 - c^2) / c^2 (Walter et al. 2007 eq. 25). D(1) = 1 / (pi alpha^2), the peak for
+/// alpha <= 1 / sqrt(2); for larger alpha the peak, 4 alpha^2 e^(1 / alpha^2 - 2) / pi, lies at
+/// c = 1 / (sqrt(2) alpha).
 ///
 /// Domain: n_dot_h in [-1, 1] (above 1 is clamped to 1; <= 0 gives 0), alpha in [0, +inf)
 /// finite, clamped to [ALPHA_MIN, ALPHA_MAX]. NaN for NaN input, alpha < 0 or +inf. `alpha` is
@@ -376,57 +378,65 @@ pub fn d<T: Real>(n_dot_h: T, alpha: T) -> T {
 
 /// Isotropic Beckmann NDF in working precision, the fast companion of [`d`]: the same
 /// D = exp(-tan^2 / alpha^2) / (pi alpha^2 c^4) (Walter et al. 2007 eq. 25) with one division
-/// and the lane type's own exp, as renderers evaluate it (Mitsuba 3's
-/// `MicrofacetDistribution::eval`, pbrt-v4's Beckmann `D`), arranged so that no intermediate
-/// is ever a subnormal number (on x86 each costs a microcode assist of about a hundred cycles,
-/// and a Beckmann lobe's tail is full of them):
+/// and the lane type's own exponential, as renderers evaluate it (Mitsuba 3's
+/// `MicrofacetDistribution::eval`, pbrt-v4's Beckmann `D`), arranged so that for normal inputs
+/// (and 0) no intermediate is ever a subnormal number (on x86 each costs a microcode assist of
+/// about a hundred cycles, and a Beckmann lobe's tail is full of them; `tests/lane_exp.rs`
+/// reads the x86 flags that record one):
 ///
 /// r = 1 / (c alpha)^2, E = (1 - c^2) r, y = exp(-E / 2) r alpha / sqrt(pi), D = y^2,
 ///
 /// with 1 - c^2 in one fused multiply-add where the target has FMA, exp(-E / 2) as 2^-t for
-/// t = E / (2 ln 2) (a polynomial on f32 lanes, libm's exp2 elsewhere), and D = 0 wherever it
+/// t = E / (2 ln 2) (a polynomial on f32 lanes, libm's exp2 elsewhere), cosines below 2^-40
+/// (f32) / 2^-400 (f64) raised to that floor (D is 0 there either way), and D = 0 wherever it
 /// is below the smallest normal number (where E >= 150 in f32 / 1380 in f64, or y^2 would be
-/// subnormal), an absolute error below 1.2e-38 (f32) / 2.3e-308 (f64) against a peak of
-/// 1 / (pi alpha^2).
+/// subnormal): an absolute error below 1.2e-38 (f32) / 2.3e-308 (f64).
 ///
 /// Domain, edges and bad input as [`d`]: n_dot_h in [-1, 1] (above 1 clamped to 1; <= 0
 /// gives 0), alpha in [0, +inf) finite, clamped to [ALPHA_MIN, ALPHA_MAX] (the RMS slope, not
-/// perceptual roughness); peak 1 / (pi alpha^2) at c = 1; NaN for NaN input, alpha < 0 or
-/// +inf.
+/// perceptual roughness); D(1) = 1 / (pi alpha^2), the peak for alpha <= 1 / sqrt(2); NaN for
+/// NaN input, alpha < 0 or +inf.
 ///
-/// Accuracy: the rounding of E (about 3 ULP relative) becomes an absolute error of exp's
-/// argument E times larger, so the error grows with E = tan^2 / alpha^2, i.e. far in the tail
-/// of the lobe where D is small against its peak; the square doubles exp's own error. Max
-/// error against [`d`] over cosines from 0 through 1e-7 to 1 and alpha over
-/// [ALPHA_MIN, ALPHA_MAX], by range of E:
+/// Accuracy: E carries about four roundings, which the exponential turns into an absolute
+/// error of its argument E times larger, and the square doubles: the error grows as about
+/// 5 E ULP, i.e. far in the tail of the lobe where D is small against its peak. Max error
+/// against [`d`] over a grid of cosines from 0 through 1e-7 to 1 and alpha over
+/// [ALPHA_MIN, ALPHA_MAX], plus 400 000 random pairs, by range of E:
 ///
 /// | E = tan^2 / alpha^2 | <= 1 | (1, 10] | (10, 100] | (100, 1000] |
 /// |---|---|---|---|---|
-/// | f32, f32x8: ULP (relative) | 11 (6.9e-7) | 25 (1.9e-6) | 177 (1.5e-5) | D < 1e-30 |
-/// | f64, f64x4: ULP (relative) | 9 (1.1e-15) | 21 (3.3e-15) | 225 (3.0e-14) | 1747 (2.6e-13) |
+/// | f32, f32x8: ULP (relative) | 11 (7.1e-7) | 31 (2.0e-6) | 209 (1.5e-5) | D < 1e-30 |
+/// | f64, f64x4: ULP (relative) | 9 (1.3e-15) | 26 (3.4e-15) | 326 (4.1e-14) | 2507 (3.1e-13) |
 ///
 /// (`cargo test --all-features --test fast_variants -- --nocapture`, default x86-64 build;
-/// errors counted where D >= 1e-30 in f32, 1e-300 in f64). On f64x4 the lanes equal the
+/// errors counted where D >= 1e-30 in f32, 1e-300 in f64; the test asserts 8 + 5 E ULP at
+/// each bin's upper E, which a denser search may approach). On f64x4 the lanes equal the
 /// scalar results bit for bit; on f32x8 they differ only through the lane 2^-t, a polynomial
-/// within 1 ULP of libm's: within 6 ULP of D.
+/// within 2 ULP of libm's: within 6 ULP of D.
 ///
-/// Run time (native build, one core, 10^7 cosines through [`crate::batch::run_f32`]): 1.7x a
-/// copy of the same bytes, 0.14x [`d`], 0.74x Mitsuba 3's `eval` on the same batch
-/// (`benches/mitsuba/compare.py`).
+/// Run time (native build, one core, 10^7 uniform cosines through
+/// [`crate::batch::run_f32`]): 1.7x a copy of the same bytes, 0.14x [`d`], 0.74x Mitsuba 3's
+/// `eval` on the same batch (`benches/mitsuba/compare.py`).
 #[inline]
 #[must_use]
 pub fn d_fast<T: Real>(n_dot_h: T, alpha: T) -> T {
     let single = crate::dw::single::<T>();
     // NaN alpha, alpha < 0 or +inf give NaN here, which every step below carries to D.
     let a = clamp_alpha(alpha);
-    // c <= 0 (and -0) gives D = 0 through the formula itself (r capped, then t >= cap). NaN
-    // stays NaN (`clamp` propagates it).
-    let c = n_dot_h.clamp(T::ZERO, T::ONE);
+    // Cosines below 2^-40 (f32) / 2^-400 (f64), c <= 0 included, give D = 0 (E > 2^53):
+    // raised to that floor they still do (through the cap on t), and c alpha, c^2 and
+    // (c alpha)^2 stay out of the subnormal range. NaN stays NaN (`clamp` propagates it).
+    let c_min = T::splat(if single {
+        9.094_947_017_729_282e-13
+    } else {
+        3.872_591_914_849_318e-121
+    });
+    let c = n_dot_h.clamp(c_min, T::ONE);
     let ca = c * a;
     let s2 = crate::microfacet::sin2_working(c);
     // One division: r = 1 / (c alpha)^2, E = s2 r, and D = e^-E r^2 alpha^2 / pi evaluated as
     // the square of y = 2^-t r alpha / sqrt(pi) with t = E / (2 ln 2), so that neither 2^-t nor
-    // y is ever subnormal while D is a normal number. The floor on (c alpha)^2 (2^-63, 2^-511)
+    // y is subnormal while D is a normal number. The floor on (c alpha)^2 (2^-63, 2^-511)
     // keeps r finite. Where E >= 150 (f32) / 1380 (f64), D = e^-E E^2 alpha^2 / (pi s2^2) is
     // below the smallest normal for every alpha in [ALPHA_MIN, ALPHA_MAX] (that would take
     // s2 < alpha 1e-11, i.e. E < 1e-11 / alpha): those lanes are 0, and t is capped there
@@ -446,7 +456,10 @@ pub fn d_fast<T: Real>(n_dot_h: T, alpha: T) -> T {
     };
     let r = (ca * ca).max(T::splat(floor)).recip();
     let t = s2 * (r * T::splat(0.5 * core::f64::consts::LOG2_E));
-    let y = t.min(T::splat(t_cap)).exp2_neg() * (r * (a * T::splat(FRAC_1_SQRT_PI)));
+    let y = t
+        .min(T::splat(t_cap))
+        .exp2_neg(crate::real::sealed::Token::NEW)
+        * (r * (a * T::splat(FRAC_1_SQRT_PI)));
     // y^2 is subnormal below y = 2^-63 (f32) / 2^-511 (f64): those lanes are 0 first, so no
     // lane ever holds a subnormal number (each costs a microcode assist on x86).
     let zero = t.simd_ge(T::splat(t_cap)) | y.simd_lt(T::splat(y_min));

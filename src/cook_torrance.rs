@@ -46,11 +46,12 @@ pub fn half_vector<T: Real>(wo: V3<T>, wi: V3<T>) -> (V3<T>, T) {
 /// bit), and |s|^2 is summed from the components of s, which carry no cancellation: both
 /// cosines stay accurate when wo and wi are nearly opposite, where [`half_vector`]'s wo.h
 /// carries wo's length error (its rounding) divided by 1 + wo.wi. Domain: unit vectors.
-/// v.h is clamped to 1; where wo = -wi exactly (h undefined) the result is n.h = 1, v.h = 0,
-/// like [`half_vector`]'s fallback to the normal; NaN in any component gives NaN in both.
-/// Within 1 ULP of the same formulas in f64 (f32 inputs), and within 3 ULP of
-/// [`half_vector`]'s cosines where 1 + wo.wi > 0.01 (`cargo test --test cook_torrance_rgb
-/// half_cosines -- --nocapture`).
+/// v.h is clamped to 1; where wo = -wi exactly (h undefined) the result is n.h = 1 (as
+/// [`half_vector`] falls back to the normal) and v.h = 0 (where [`half_vector`] gives wo.z);
+/// NaN in any component gives NaN in both. Within 3 ULP of the same formulas evaluated in
+/// f64 from the same f32 directions; within 8 ULP of [`half_vector`]'s cosines where
+/// 1 + wo.wi > 0.3, while closer to opposite directions [`half_vector`]'s own error takes
+/// over (`cargo test --test cook_torrance_rgb half_cosines -- --nocapture`).
 #[inline]
 #[must_use]
 pub fn half_cosines<T: Real>(wo: V3<T>, wi: V3<T>) -> (T, T) {

@@ -444,8 +444,10 @@ pub fn conductor<T: Real>(cos_theta_i: T, eta: T, k: T) -> T {
 /// (f32) / 1.0 (f64) of that change. The same on f32x8 and f64x4, whose lanes equal the
 /// scalar results bit for bit (`cargo test --all-features --test fast_variants --
 /// --nocapture`, default x86-64 build). Not accurate (but finite, in [0, 1]) for eta = 1
-/// exactly with 0 < k < 2^-124 (f32) / 2^-1017 (f64) at cosines below about sqrt(k), where
-/// |Im(N^2 - s2)| = 2 k is raised to 2^-123 / 2^-1016.
+/// exactly with 0 < k < 2^-124 (f32) / 2^-1017 (f64) at cosines up to about a hundred times
+/// sqrt(k), where |Im(N^2 - s2)| = 2 k is raised to 2^-123 / 2^-1016: there F = k^2 / (4 c^4)
+/// comes out wrong by up to 100% of itself (an absolute error up to 0.016 at c = 2 sqrt(k),
+/// falling as c^-4).
 #[inline]
 #[must_use]
 pub fn conductor_fast<T: Real>(cos_theta_i: T, eta: T, k: T) -> T {

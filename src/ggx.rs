@@ -207,7 +207,8 @@ impl<T: Real> Microfacet<T> for Ggx<T> {
 /// Isotropic GGX NDF of the cosine between normal and half vector:
 /// D = alpha^2 / (pi ((1 - c)(1 + c) + c^2 alpha^2)^2) for c = n_dot_h in (0, 1], 0 for
 /// c <= 0 (Walter et al. 2007 eq. 33; the denominator is the cancellation-free rewrite of
-/// (1 + c^2 (alpha^2 - 1))^2). Peak 1 / (pi alpha^2) at c = 1. Domain: n_dot_h in [-1, 1]
+/// (1 + c^2 (alpha^2 - 1))^2). D(1) = 1 / (pi alpha^2), the peak for alpha <= 1 (for
+/// alpha > 1 the largest value is alpha^2 / pi, toward c = 0). Domain: n_dot_h in [-1, 1]
 /// (above 1 clamped to 1), alpha in [0, +inf) finite, clamped to [ALPHA_MIN, ALPHA_MAX]; NaN
 /// for NaN input, alpha < 0 or +inf. Correctly rounded to within 0.5 ULP (module docs): every
 /// rounding is recovered by error-free transformations and the result rounded once.
@@ -238,14 +239,15 @@ pub fn d<T: Real>(n_dot_h: T, alpha: T) -> T {
 /// (Filament's `D_GGX`, Guy and Agopian 2018, "Physically Based Rendering in Filament"):
 /// k = alpha / ((1 - c)(1 + c) + (c alpha)^2), D = k^2 / pi, for c = n_dot_h in (0, 1], 0 for
 /// c <= 0 (Walter et al. 2007 eq. 33). sin^2 is 1 - c^2 in one fused multiply-add on targets
-/// with FMA, otherwise 1 - c c below c = 1/2 and the product (1 - c)(1 + c) above, never
-/// 1 - c^2 with two roundings, so the denominator does not cancel near c = 1 (where that form
-/// keeps no digit of alpha^2 for alpha below about 2^-12 in f32).
+/// with FMA, otherwise 1 - c c below c = 1/2 (nothing cancels there) and the product
+/// (1 - c)(1 + c) above, so the denominator does not cancel near c = 1 (where 1 - c c with
+/// two roundings keeps no digit of alpha^2 for alpha below about 2^-12 in f32).
 ///
 /// Domain, edges and bad input exactly as [`d`]: n_dot_h in [-1, 1] (above 1 clamped to 1),
 /// alpha in [0, +inf) finite, clamped to [ALPHA_MIN, ALPHA_MAX] (the width, not perceptual
-/// roughness); peak 1 / (pi alpha^2) at c = 1; NaN for NaN input, alpha < 0 or +inf; the result
-/// is capped at the largest finite value (never reached: D <= 1 / (pi ALPHA_MIN^2) = 3.2e7).
+/// roughness); D(1) = 1 / (pi alpha^2), the peak for alpha <= 1; NaN for NaN input,
+/// alpha < 0 or +inf; the result is capped at the largest finite value (never reached:
+/// D <= max(1 / (pi ALPHA_MIN^2), ALPHA_MAX^2 / pi) = 3.2e7).
 ///
 /// Accuracy: about ten flops and one division in working precision, against about 150 extra
 /// flops for [`d`]'s single rounding. Max error against [`d`] over cosines from 0 through 1e-7

