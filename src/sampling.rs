@@ -13,6 +13,19 @@
 //! would reach an infinite slope). Samplers are generic over [`Real`] and branch-free on lane
 //! values: a lane's output equals the scalar output for that lane's inputs.
 //!
+//! Which uniform drives which angle differs between samplers: u2 is the azimuth of
+//! `cosine_hemisphere`'s direction and the disk angle of `ggx_vndf`, the angle of the D cos
+//! samplers' slope (their normal's azimuth is 2 pi u2 + pi), u1 the cap azimuth of
+//! `ggx_vndf_spherical_cap`, and `beckmann_vndf` has no angle (u1 and u2 are its two slopes).
+//! Each sampler's doc gives its mapping; `tests/sampling_windows.rs` checks them at normal
+//! incidence.
+//!
+//! Each sampler draws its pdf for every wo, with no approximate special case (for example at
+//! normal incidence), and for fixed u its sample is continuous in wo above the horizon,
+//! except at wo = +z for the samplers that build a frame around wo's azimuth (`ggx_vndf`,
+//! `beckmann_vndf` and `beckmann_reflection`), where that azimuth is undefined
+//! (`tests/sampling_windows.rs` checks both, on both sides of every internal switch).
+//!
 //! Bad input: a NaN in `u1`, `u2` or any component of `wo` gives a NaN direction (all three
 //! components) and a NaN pdf, never a plausible normal. alpha is clamped to [ALPHA_MIN,
 //! ALPHA_MAX] (`crate::microfacet`), so every finite alpha the constructors accept samples
@@ -98,8 +111,11 @@ fn normal_from_slope<T: Real>(sx: T, sy: T, ax: T, ay: T) -> V3<T> {
 }
 
 /// A GGX microfacet normal with pdf D(m) cos(theta_m) (the classic NDF sampling: every normal,
-/// visible or not). Slope radius r = sqrt(u1 / (1 - u1)) of the unit GGX, angle 2 pi u2,
-/// stretched by alpha (Walter et al. 2007 eq. 35-36; anisotropic by Heitz 2014 section 5.2).
+/// visible or not). The slope of the unit GGX, radius r = sqrt(u1 / (1 - u1)) at angle
+/// phi = 2 pi u2, stretched by alpha: m = normalize(-alpha_x r cos phi, -alpha_y r sin phi, 1)
+/// (Walter et al. 2007 eq. 35-36; anisotropic by Heitz 2014 section 5.2). A slope points
+/// down the facet and its normal up it, so for an isotropic alpha the normal's azimuth is
+/// phi + pi = 2 pi u2 + pi, not 2 pi u2.
 #[cfg(feature = "ggx")]
 #[inline]
 #[must_use]
@@ -116,9 +132,10 @@ pub fn ggx_d_cos<T: Real>(ggx: &Ggx<T>, u1: T, u2: T) -> (V3<T>, T) {
     )
 }
 
-/// A Beckmann microfacet normal with pdf D(m) cos(theta_m): slope radius
-/// r = sqrt(-ln(1 - u1)) of the unit Beckmann (a 2D Gaussian of variance 1/2), angle 2 pi u2,
-/// stretched by alpha (Walter et al. 2007 eq. 28-29).
+/// A Beckmann microfacet normal with pdf D(m) cos(theta_m): the slope of the unit Beckmann (a
+/// 2D Gaussian of variance 1/2), radius r = sqrt(-ln(1 - u1)) at angle phi = 2 pi u2, stretched
+/// by alpha: m = normalize(-alpha_x r cos phi, -alpha_y r sin phi, 1) (Walter et al. 2007
+/// eq. 28-29). As for [`ggx_d_cos`], an isotropic normal's azimuth is 2 pi u2 + pi.
 #[cfg(feature = "beckmann")]
 #[inline]
 #[must_use]
@@ -158,9 +175,14 @@ fn stretch<T: Real>(wo: V3<T>, ax: T, ay: T) -> V3<T> {
 }
 
 /// A GGX visible normal (pdf D_wo(m)) by Heitz 2018, "Sampling the GGX Distribution of Visible
-/// Normals" (JCGT 7(4)): stretch wo to the unit hemisphere configuration, sample the projected
-/// hemisphere seen from it (a disk whose far half is squashed by (1 + v.z) / 2), lift, and
-/// unstretch. wo below the horizon is mirrored (the visible normals of |wo.z|).
+/// Normals" (JCGT 7(4)): stretch wo to the unit hemisphere configuration, v, sample the
+/// projected hemisphere seen from it (a disk whose far half is squashed by (1 + v.z) / 2),
+/// lift, and unstretch. wo below the horizon is mirrored (the visible normals of |wo.z|).
+///
+/// The disk point is sqrt(u1) (cos phi, sin phi) with phi = 2 pi u2, in the basis
+/// t1 = (-v.y, v.x, 0) / |(v.x, v.y)| (across wo's azimuth), t2 = v x t1; at normal incidence,
+/// where that azimuth is undefined, t1 = +x, t2 = +y, so an isotropic normal's azimuth is
+/// 2 pi u2 there. The sample is continuous in wo everywhere else.
 #[cfg(feature = "ggx")]
 #[inline]
 #[must_use]
@@ -196,6 +218,10 @@ pub fn ggx_vndf<T: Real>(ggx: &Ggx<T>, wo: V3<T>, u1: T, u2: T) -> (V3<T>, T) {
 /// visible normals are the half vectors between the stretched view and uniform directions on
 /// the spherical cap z >= -v.z; one uniform cap sample, one add, one unstretch. Same
 /// distribution as [`ggx_vndf`], fewer operations and no basis.
+///
+/// The cap point has azimuth phi = 2 pi u1 and height z = (1 - u2)(1 + v.z) - v.z (u1 is the
+/// angle here, not u2), so at normal incidence an isotropic normal's azimuth is 2 pi u1. With
+/// no basis the sample is continuous in wo everywhere, normal incidence included.
 #[cfg(feature = "ggx")]
 #[inline]
 #[must_use]
@@ -275,9 +301,18 @@ pub fn erf_inv<T: Real>(y: T) -> T {
 /// A Beckmann visible normal (pdf D_wo(m)) by Heitz and d'Eon 2014, "Importance Sampling
 /// Microfacet-Based BSDFs using the Distribution of Visible Normals" (EGSR), with Jakob's
 /// improvements (Mitsuba): in the unit configuration seen from theta, draw the slope x from
-/// its marginal by inverting its CDF, (1 + erf(x) + tan(theta) exp(-x^2) / sqrt(pi)) / norm,
-/// with a fitted initial guess and 8 safeguarded Newton-bisection steps, then y from the
-/// Gaussian y = erf^-1(2 u2 - 1); rotate by the azimuth of wo, stretch by alpha.
+/// its marginal by inverting its CDF at u1, (1 + erf(x) + tan(theta) exp(-x^2) / sqrt(pi)) /
+/// norm, with a fitted initial guess and 8 safeguarded Newton-bisection steps, then y from the
+/// Gaussian y = erf^-1(2 u2 - 1); rotate by the azimuth of wo, stretch by alpha:
+/// m = normalize(-alpha_x sx, -alpha_y sy, 1) for the rotated slope (sx, sy).
+///
+/// The two slopes are drawn separately, with no polar angle: u1 moves the normal along the
+/// stretched view's azimuth (towards wo as u1 decreases), u2 across it. The same inversion
+/// serves every wo: at normal incidence tan(theta) = 0 leaves the CDF (1 + erf(x)) / 2,
+/// linear in erf(x), so the start is already its inverse, x = erf^-1(2 u1 - 1), in the
+/// tangent frame (wo's azimuth is undefined there; elsewhere the sample is continuous in wo).
+/// u1 and u2 below 1e-6 are raised to it, as in Mitsuba, which moves the slopes' lower tails
+/// beyond that quantile onto it (a probability of 1e-6 each).
 ///
 /// Lanes run the same fixed 8 steps (no data-dependent loop), so lanes equal scalars.
 #[cfg(feature = "beckmann")]
@@ -288,8 +323,11 @@ pub fn beckmann_vndf<T: Real>(beckmann: &Beckmann<T>, wo: V3<T>, u1: T, u2: T) -
     let v = stretch(wo, ax, ay);
     let cos_t = v.z;
     let sin_t = v.x.mul_add(v.x, v.y * v.y).sqrt();
-    // Near normal incidence the visible slopes are the plain Gaussian slopes.
-    let near_normal = cos_t.simd_gt(T::splat(0.9999));
+    // No special case near normal incidence: Gaussian slopes in polar form are D cos normals,
+    // the visible ones at theta = 0 only (below 0.81 degrees they once gave E[m.x] = 0 where
+    // D_wo has 4.3e-3 at alpha = 1, theta_o = 0.79 degrees, and made the sample jump where wo
+    // crossed the switch). At theta = 0 (sin_t = 0) the inversion below stays finite:
+    // tan_t = 0, cot_t = +inf, erf(cot_t) = 1 and tan_t exp(-cot_t^2) = 0.
     let tan_t = sin_t / cos_t;
     let cot_t = cos_t / sin_t;
     let sqrt_pi_inv = T::splat(FRAC_1_SQRT_PI);
@@ -315,14 +353,8 @@ pub fn beckmann_vndf<T: Real>(beckmann: &Beckmann<T>, wo: V3<T>, u1: T, u2: T) -
         b = T::select(next.is_finite(), next, b);
     }
     let b = b.clamp(lo, hi);
-    let slope_x_view = erf_inv(b);
-    let slope_y_view = erf_inv(T::TWO * u2.max(T::splat(1e-6)) - T::ONE);
-    // Normal incidence: Gaussian slopes of variance 1/2 in polar form.
-    let r = (-(T::ONE - u1).ln()).sqrt_nonneg();
-    let phi = T::TWO * T::PI * u2;
-    let (gx, gy) = (r * phi.cos(), r * phi.sin());
-    let sx = T::select(near_normal, gx, slope_x_view);
-    let sy = T::select(near_normal, gy, slope_y_view);
+    let sx = erf_inv(b);
+    let sy = erf_inv(T::TWO * u2.max(T::splat(1e-6)) - T::ONE);
     // Rotate from the view's azimuth frame to the tangent frame.
     let has_azimuth = sin_t.simd_gt(T::ZERO);
     let cos_p = T::select(has_azimuth, v.x / sin_t, T::ONE);

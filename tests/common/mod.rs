@@ -22,16 +22,31 @@ pub const NZ: usize = 16;
 pub const NP: usize = 32;
 pub const SAMPLES: usize = 200_000;
 
+/// Midpoints per side of each bin in the rule that gives [`chi_square`] its expected counts.
+pub const SUB: usize = 64;
+
 /// Chi-square statistic of `SAMPLES` draws against `pdf`, binned by (cos theta, phi), which
-/// are uniform in solid angle. Expected counts by an 8 x 8 midpoint rule per bin; bins
+/// are uniform in solid angle. Expected counts by a `SUB` x `SUB` midpoint rule per bin; bins
 /// expecting fewer than 5 are pooled. Returns (statistic, degrees of freedom).
 pub fn chi_square(
+    sample: impl FnMut(f64, f64) -> (DVec3, f64),
+    pdf: impl Fn(DVec3) -> f64,
+) -> (f64, usize) {
+    chi_square_with(SAMPLES, SUB, sample, pdf)
+}
+
+/// [`chi_square`] with `samples` draws and `sub` x `sub` midpoints per bin for the expected
+/// counts. These cost `NZ NP sub^2` calls of `pdf` (2 million at `SUB`, which resolves lobes
+/// a bin wide); a density that varies over many bins needs far fewer.
+pub fn chi_square_with(
+    samples: usize,
+    sub: usize,
     mut sample: impl FnMut(f64, f64) -> (DVec3, f64),
     pdf: impl Fn(DVec3) -> f64,
 ) -> (f64, usize) {
     let mut observed = vec![0.0; NZ * NP];
     let mut rng = Rng(0x5eed);
-    for _ in 0..SAMPLES {
+    for _ in 0..samples {
         let (w, p) = sample(rng.next_f64(), rng.next_f64());
         assert!(w.is_finite() && p.is_finite() && p >= 0.0, "{w:?} {p}");
         assert!((w.length() - 1.0).abs() < 1e-9, "not unit: {w:?}");
@@ -50,7 +65,6 @@ pub fn chi_square(
         observed[iz * NP + ip] += 1.0;
     }
     let mut expected = vec![0.0; NZ * NP];
-    let sub = 64;
     for iz in 0..NZ {
         for ip in 0..NP {
             let mut sum = 0.0;
@@ -64,7 +78,7 @@ pub fn chi_square(
                 }
             }
             let area = (1.0 / NZ as f64) * (core::f64::consts::TAU / NP as f64);
-            expected[iz * NP + ip] = sum / (sub * sub) as f64 * area * SAMPLES as f64;
+            expected[iz * NP + ip] = sum / (sub * sub) as f64 * area * samples as f64;
         }
     }
     let (mut stat, mut dof, mut pool_o, mut pool_e) = (0.0, 0usize, 0.0, 0.0);
@@ -84,11 +98,16 @@ pub fn chi_square(
     (stat, dof.saturating_sub(1))
 }
 
-/// Rejects at p = 1e-4 (normal approximation of chi-square, good for dof > 100): a correct
-/// sampler fails one seed in 10^4, a wrong one (a missing Jacobian, a swapped axis) scores in
-/// the thousands.
+/// The chi-square value a statistic with `dof` degrees of freedom exceeds with probability
+/// 1e-4 (normal approximation, good for dof > 100).
+pub fn critical(dof: usize) -> f64 {
+    dof as f64 + 3.72 * (2.0 * dof as f64).sqrt()
+}
+
+/// Rejects at p = 1e-4 ([`critical`]): a correct sampler fails one seed in 10^4, a wrong one
+/// (a missing Jacobian, a swapped axis) scores in the thousands.
 pub fn assert_fits(name: &str, (stat, dof): (f64, usize)) {
-    let critical = dof as f64 + 3.72 * (2.0 * dof as f64).sqrt();
+    let critical = critical(dof);
     println!("{name}: chi^2 = {stat:.1}, dof = {dof}, critical = {critical:.1}");
     assert!(dof > 50, "{name}: too few populated bins ({dof})");
     assert!(
