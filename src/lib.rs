@@ -34,8 +34,12 @@
 //! whole glTF 2.0 material rather than its terms, `material::MetallicRoughness` evaluates and
 //! samples base colour, metallic and roughness from local-frame directions (the repository's
 //! `examples/sphere.rs` shades a sphere with it in under 60 lines). Lanes equal scalars bit for
-//! bit on a given target; `Real::mul_add` is fused only where the target has FMA, so results
-//! can differ between targets in the last bit, never between lane and scalar.
+//! bit on a given target wherever a kernel uses only arithmetic, `sqrt` and `mul_add`; where it
+//! calls `exp`, `ln`, `sin`, `cos`, `atan`, `acos` or `asin`, the lanes use polynomial forms 1 to
+//! 3 ULP from the scalar `libm` ones (the table in [`real`]), and the kernel's lanes can differ
+//! from its scalars by a few ULP more (the repository's reference CLI tests bound every such
+//! kernel). `Real::mul_add` is fused only where the target has FMA, so results can differ
+//! between targets in the last bit.
 //!
 //! In generic code `T::splat(x)` (from [`Real`]) takes an `f64`; on a concrete `f32x8`,
 //! `f32x8::splat` is `wide`'s and takes an `f32`, and `f32x8::from_f64(x)` takes an `f64`
@@ -93,7 +97,8 @@
 //! operators, the exact diffuse and Phong lobes) are held to ULP bounds against a correctly rounded reference (MPFR at 256
 //! bits, evaluating each paper's own definition) by the `brdf-oracle` workspace member of the
 //! repository; the measured table is in the README ("Accuracy promises") and `docs/accuracy.md`,
-//! and the repository's report (`cargo run --release --example report`) prints it.
+//! and the repository's report (`cargo run --release -p brdf-report`) prints it beside the
+//! error and run time of every approximation.
 //!
 #![no_std]
 #![deny(missing_docs)]

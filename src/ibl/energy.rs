@@ -351,7 +351,9 @@ pub fn kulla_conty_lobe<T: Real>(e_o: T, e_i: T, e_avg: T) -> T {
 pub fn kulla_conty_fresnel<T: Real>(f_avg: T, e_avg: T) -> T {
     let den = T::ONE - f_avg * (T::ONE - e_avg);
     let v = T::select(den.simd_gt(T::ZERO), f_avg * f_avg * e_avg / den, T::ONE);
-    nan_unless(in_unit(f_avg) & in_unit(e_avg), v)
+    // F_ms <= F_avg <= 1, but at F_avg = 1 the quotient E_avg / (1 - (1 - E_avg)) rounds up to
+    // 1 + 1e-13 for small E_avg: the cap keeps it in [0, 1] (NaN passes through Real::min).
+    nan_unless(in_unit(f_avg) & in_unit(e_avg), v.min(T::ONE))
 }
 
 /// Hemispherical average of Schlick's Fresnel F0 + (F90 - F0)(1 - mu)^5:
@@ -367,9 +369,10 @@ pub fn fresnel_avg_schlick<T: Real>(f0: T, f90: T) -> T {
 
 /// Hemispherical average F_avg = 2 integral_0^1 F(mu) mu dmu of the exact conductor Fresnel
 /// term [`crate::fresnel::conductor`] of complex IOR eta + i k, by 32-point Gauss-Legendre
-/// quadrature (F is smooth in mu for a conductor: the result is within 1e-12 of the integral).
-/// Domain: eta in (0, MAX], k in [0, MAX]; NaN outside or for NaN. Not a hot-path kernel (32
-/// Fresnel evaluations); per channel for RGB.
+/// quadrature (F is smooth in mu for a conductor: the result is within 1e-12 of the integral),
+/// capped at 1: where F is 1 at every angle (eta or k near 0 or MAX) the rounded weights sum
+/// to 1 + 2^-52. Domain: eta in (0, MAX], k in [0, MAX]; NaN outside or for NaN. Not a
+/// hot-path kernel (32 Fresnel evaluations); per channel for RGB.
 #[must_use]
 pub fn fresnel_avg_conductor(eta: f64, k: f64) -> f64 {
     let (x, w) = crate::fresnel::gauss_legendre_01::<32>();
@@ -377,7 +380,9 @@ pub fn fresnel_avg_conductor(eta: f64, k: f64) -> f64 {
     for i in 0..x.len() {
         sum += w[i] * crate::fresnel::conductor(x[i], eta, k) * x[i];
     }
-    2.0 * sum
+    let avg = 2.0 * sum;
+    // Not f64::min, which would turn a NaN average into 1.
+    if avg > 1.0 { 1.0 } else { avg }
 }
 
 /// Kulla and Conty's multiple-scattering term of GGX from the built-in tables:

@@ -20,30 +20,30 @@ fn wo_at(theta_deg: f64) -> DVec3 {
 }
 
 fn header(first: &str) {
-    print!("| {first} |");
+    out!("| {first} |");
     for t in THETAS {
-        print!(" {t} |");
+        out!(" {t} |");
     }
-    println!();
-    println!("|---|{}", "---|".repeat(THETAS.len()));
+    outln!();
+    outln!("|---|{}", "---|".repeat(THETAS.len()));
 }
 
 /// One table row: the albedo of `f` at each theta_o; returns the row's maximum.
 fn albedo_row(name: &str, f: impl Fn(V3<f64>, V3<f64>) -> f64) -> f64 {
-    print!("| {name} |");
+    out!("| {name} |");
     let mut max: f64 = 0.0;
     for t in THETAS {
         let a = directional_albedo(wo_at(t), |o, i| f(V3::from(o), V3::from(i))).value;
-        print!(" {a:.4} |");
+        out!(" {a:.4} |");
         max = max.max(a);
     }
-    println!();
+    outln!();
     max
 }
 
 /// Directional albedo of every diffuse lobe with rho = 1.
 pub fn diffuse_albedo() -> Result<(), ParamError> {
-    println!("\n## Diffuse lobes: directional albedo with rho = 1 (a white furnace; 1 is ideal)\n");
+    outln!("\n## Diffuse lobes: directional albedo with rho = 1 (a white furnace; 1 is ideal)\n");
     header("lobe \\ theta_o");
     let lambert = Lambert::new(1.0)?;
     albedo_row("Lambert", |o, i| lambert.eval(o, i));
@@ -71,7 +71,7 @@ pub fn diffuse_albedo() -> Result<(), ParamError> {
             b.eval(o, i)
         });
     }
-    println!(
+    outln!(
         "\nOren-Nayar (both published forms) and Burley's diffuse are fits, not energy-conserving \
          models: their albedo leaves 1 in both directions. EON adds the multiple-scattering lobe \
          that brings Fujii's form back to 1. Full tables: `cargo test --test diffuse_oren_nayar_energy \
@@ -98,20 +98,22 @@ fn phong_row(name: &str, make: impl Fn(f64) -> Result<Lobe, ParamError>) -> Resu
             }
         }
     }
-    println!(
+    outln!(
         "| {name} | {:.3e} | {max:.4} (n = {}, theta_o = {} deg) |",
-        rec.max_rel, at.0, at.1
+        rec.max_rel,
+        at.0,
+        at.1
     );
     Ok(())
 }
 
 /// The Phong comparison: the classic form against the reciprocal and normalized ones.
 pub fn phong_comparison() -> Result<(), ParamError> {
-    println!("\n## Phong family: reciprocity, energy and peaks (ks = 1)\n");
-    println!(
+    outln!("\n## Phong family: reciprocity, energy and peaks (ks = 1)\n");
+    outln!(
         "| model | reciprocity max rel | max albedo over n in {{0.5, 2, 8, 64, 1e3, 1e4}} and theta_o |"
     );
-    println!("|---|---|---|");
+    outln!("|---|---|---|");
     phong_row("classic ks (r.l)^n / (n.l)", |n| {
         let l = ClassicPhong::new(1.0, n)?;
         Ok(Box::new(move |o, i| l.eval(o, i)))
@@ -129,20 +131,20 @@ pub fn phong_comparison() -> Result<(), ParamError> {
         Ok(Box::new(move |o, i| l.eval(o, i)))
     })?;
 
-    println!(
+    outln!(
         "\nPeak (mirror direction) of normalized Phong against classic Phong at normal incidence:\n"
     );
-    println!("| n | classic peak | normalized peak | normalized / classic |");
-    println!("|---|---|---|---|");
+    outln!("| n | classic peak | normalized peak | normalized / classic |");
+    outln!("|---|---|---|---|");
     for n in [1.0, 2.0, 4.0, 16.0, 64.0, 1e3] {
         let classic = phong::classic(1.0, 1.0, 1.0, 1.0, n);
         let normalized = phong::normalized(1.0, 1.0, 1.0, 1.0, n);
-        println!(
+        outln!(
             "| {n} | {classic:.4} | {normalized:.4} | {:.4} |",
             normalized / classic
         );
     }
-    println!(
+    outln!(
         "\nA wide normalized lobe (n < 2 pi - 2) is dimmer at its peak than classic Phong and a \
          tight one brighter, because the normalized lobe keeps its integral fixed while the \
          classic one loses energy as it narrows."
@@ -156,10 +158,11 @@ pub fn phong_comparison() -> Result<(), ParamError> {
             worst = (rel, n);
         }
     }
-    println!(
+    outln!(
         "\nBlinn-Phong normalization (n + 8) / (8 pi) against the exact one over n in [0, 1e4]: \
          max relative error {:.4} at n = {}.",
-        worst.0, worst.1
+        worst.0,
+        worst.1
     );
     Ok(())
 }
@@ -167,7 +170,7 @@ pub fn phong_comparison() -> Result<(), ParamError> {
 /// White furnace of the metallic-roughness material: a metal with F0 = 1 and a white
 /// dielectric, per channel (they are grey, so the green channel stands for all three).
 pub fn material_furnace() -> Result<(), ParamError> {
-    println!("\n## Metallic-roughness material: directional albedo (green channel; 1 is ideal)\n");
+    outln!("\n## Metallic-roughness material: directional albedo (green channel; 1 is ideal)\n");
     header("material \\ theta_o");
     for (name, metallic) in [
         ("metal, base colour 1", 1.0),
@@ -178,7 +181,7 @@ pub fn material_furnace() -> Result<(), ParamError> {
             albedo_row(&format!("{name}, roughness {r}"), |o, i| m.eval(o, i).y);
         }
     }
-    println!(
+    outln!(
         "\nThe rough metal loses what single-scattering GGX loses (the energy-loss table above). \
          The glTF dielectric, whose diffuse layer is weighted by 1 - F(v.h), is not energy \
          conserving at grazing view: its specular layer reflects F(theta_o) while the diffuse \
@@ -190,13 +193,13 @@ pub fn material_furnace() -> Result<(), ParamError> {
 
 /// The punctual-light falloffs at a few distances.
 pub fn light_falloffs() {
-    println!("\n## Punctual lights: distance falloff (radius 4, minimum distance 0.01)\n");
-    println!(
+    outln!("\n## Punctual lights: distance falloff (radius 4, minimum distance 0.01)\n");
+    outln!(
         "| d | 1 / d^2 | windowed (UE4) | windowed 1 / d^2 (Frostbite) | 1 / (1 + 0.1 d + 0.01 d^2) |"
     );
-    println!("|---|---|---|---|---|");
+    outln!("|---|---|---|---|---|");
     for d in [0.0, 0.5, 1.0, 2.0, 3.0, 3.9, 4.0, f64::INFINITY] {
-        println!(
+        outln!(
             "| {d} | {:.4} | {:.4} | {:.4} | {:.4} |",
             lights::inverse_square(d, 0.01),
             lights::windowed(d, 4.0),

@@ -3,7 +3,7 @@
 //! by quadrature and SH9, the single-sample IBL bug against the split-sum path on a sky with a
 //! sun, and the multiple-scattering white furnace before and after compensation.
 
-#[path = "../../tests/scenes/s0.rs"]
+#[path = "../../../tests/scenes/s0.rs"]
 mod s0;
 
 use brdf::V3;
@@ -16,26 +16,26 @@ use glam::DVec3;
 
 /// The DFG table (A, B, E), the fits against it, and the mip mappings.
 pub fn dfg_section() {
-    println!("\n## Image-based lighting: the split-sum DFG terms (GGX, height-correlated Smith)\n");
-    println!(
+    outln!("\n## Image-based lighting: the split-sum DFG terms (GGX, height-correlated Smith)\n");
+    outln!(
         "A and B weigh F0 and F90 (albedo = F0 A + F90 B), E = A + B is the albedo with F = 1; \
          {} samples per entry (`ibl::dfg::DEFAULT_SAMPLES`, every entry of a 64 x 64 table \
          within 1e-4: `cargo test --test ibl_dfg_accuracy -- --nocapture`).\n",
         dfg::DEFAULT_SAMPLES
     );
     let novs = [0.05, 0.25, 0.5, 0.75, 1.0];
-    print!("| roughness r |");
+    out!("| roughness r |");
     for n in novs {
-        print!(" NoV {n}: A / B / E |");
+        out!(" NoV {n}: A / B / E |");
     }
-    println!("\n|---|{}", "---|".repeat(novs.len()));
+    outln!("\n|---|{}", "---|".repeat(novs.len()));
     for r in [0.1, 0.3, 0.5, 0.7, 1.0] {
-        print!("| {r} |");
+        out!("| {r} |");
         for n in novs {
             let [a, b, e] = dfg::dfg(n, r * r, dfg::DEFAULT_SAMPLES);
-            print!(" {a:.4} / {b:.4} / {e:.4} |");
+            out!(" {a:.4} / {b:.4} / {e:.4} |");
         }
-        println!();
+        outln!();
     }
 
     // The fits against a 32 x 32 table (4096 samples per entry: within 4e-4 of exact, far
@@ -43,18 +43,18 @@ pub fn dfg_section() {
     const N: usize = 32;
     let mut table = vec![[0.0f32; 3]; N * N];
     if dfg::table(&mut table, N, N, 4096).is_err() {
-        println!("(table build failed)");
+        outln!("(table build failed)");
         return;
     }
-    println!(
+    outln!(
         "\nThe analytic fits engines ship, against that table ({N} x {N} cell centres, 4096 \
          samples per entry); max |error| (RMS), over all cells and over NoV >= 0.25. The fits \
          were made for other models (UE4's LUT uses the separable Schlick-Smith G, Lazarov a \
          Blinn-Phong lobe), which is most of their error. Run time against the table lookup: \
          `cargo bench --bench ibl`.\n"
     );
-    println!("| fit | A | B | A, NoV >= 0.25 | B, NoV >= 0.25 |");
-    println!("|---|---|---|---|---|");
+    outln!("| fit | A | B | A, NoV >= 0.25 | B, NoV >= 0.25 |");
+    outln!("|---|---|---|---|---|");
     type Fit = fn(f64, f64) -> [f64; 2];
     let fits: [(&str, Fit); 4] = [
         ("Karis 2014 (UE4 mobile)", dfg::karis_mobile::<f64>),
@@ -90,23 +90,23 @@ pub fn dfg_section() {
                 }
             }
         }
-        print!("| {name} |");
+        out!("| {name} |");
         for s in st {
-            print!(" {:.3} ({:.3}) |", s[0], (s[1] / s[2]).sqrt());
+            out!(" {:.3} ({:.3}) |", s[0], (s[1] / s[2]).sqrt());
         }
-        println!();
+        outln!();
     }
 
-    println!(
+    outln!(
         "\nRoughness to mip level of a prefiltered cube with 8 levels (UE4: linear in r from the \
          top mip; Filament: lod = L r (2 - r), L = levels - 1; UE4's capture mapping: \
          `ComputeReflectionCaptureMipFromRoughness`, which goes negative below r = 0.056 on 8 \
          levels: the sampler clamps it to mip 0).\n"
     );
-    println!("| roughness r | linear | Filament | UE4 capture |");
-    println!("|---|---|---|---|");
+    outln!("| roughness r | linear | Filament | UE4 capture |");
+    outln!("|---|---|---|---|");
     for r in [0.0, 0.1, 0.25, 0.5, 0.75, 1.0] {
-        println!(
+        outln!(
             "| {r} | {:.3} | {:.3} | {:.3} |",
             dfg::mip_from_roughness_linear(r, 8.0),
             dfg::lod_from_roughness_filament(r, 7.0),
@@ -117,10 +117,10 @@ pub fn dfg_section() {
 
 /// Irradiance by quadrature and SH9, and the single-sample bug against the split sum.
 pub fn irradiance_section() {
-    println!("\n## Image-based lighting: irradiance and the split-sum path\n");
+    outln!("\n## Image-based lighting: irradiance and the split-sum path\n");
     let e = irradiance::irradiance(V3::new(0.0, 0.0, 1.0), |_| V3::splat(1.0), 64);
     let sh = irradiance::project(|_| V3::splat(1.0), 64).irradiance(V3::new(0.0, 0.0, 1.0));
-    println!(
+    outln!(
         "A constant environment L = 1 gives E = pi: quadrature {:.15} (error {:.1e}), SH9 \
          {:.15} (error {:.1e}).",
         e.x,
@@ -147,7 +147,7 @@ pub fn irradiance_section() {
         worst_sky = worst_sky.max(s0::rel(sh_sky.irradiance(n), q_sky));
         worst_sun = worst_sun.max(s0::rel(sh_sun.irradiance(n), q_sun));
     }
-    println!(
+    outln!(
         "SH9 irradiance against quadrature over 200 normals, max relative error: the sky alone \
          {:.2}%, the sky with its sun {:.1}% (band-2 truncation of a 2.5-degree sun of \
          radiance 2000; `cargo test --test ibl_irradiance_sh9_error -- --nocapture` bounds SH9 on its own \
@@ -155,17 +155,17 @@ pub fn irradiance_section() {
         100.0 * worst_sky,
         100.0 * worst_sun
     );
-    println!(
+    outln!(
         "The single-sample IBL bug (one sample along n for diffuse, a lerp toward it for \
          roughness, both at full weight) against the split-sum path (kD = (1 - F)(1 - \
          metallic), quadrature or SH9 irradiance, GGX-prefiltered radiance times F0 A + B), \
          on that sky with its sun; reference: the reflectance integral of the metallic-roughness \
          BRDF on a 1500 x 3000 grid. Relative error (max over RGB):\n"
     );
-    println!(
+    outln!(
         "| surface | split sum | split sum, SH9 | single sample | white furnace: split sum / single sample |"
     );
-    println!("|---|---|---|---|---|");
+    outln!("|---|---|---|---|---|");
     for s in s0::surfaces() {
         let want = s0::reference(&s, s0::env, 1500);
         let p = s0::paths(&s, s0::env);
@@ -174,7 +174,7 @@ pub fn irradiance_section() {
             ..s
         };
         let w = s0::paths(&white, s0::white);
-        println!(
+        outln!(
             "| {} | {:.1}% | {:.1}% | {:.0}% | {:.4} / {:.4} |",
             s.name,
             100.0 * s0::rel(p.fixed, want),
@@ -189,18 +189,18 @@ pub fn irradiance_section() {
 /// The white furnace of GGX before and after Kulla-Conty compensation, and the saturation of
 /// a coloured F0.
 pub fn energy_section() {
-    println!("\n## Multiple-scattering energy compensation (Kulla and Conty 2017)\n");
-    println!(
+    outln!("\n## Multiple-scattering energy compensation (Kulla and Conty 2017)\n");
+    outln!(
         "Directional albedo of GGX with F = 1 (a conductor with F0 = 1) by the public \
          integrator: single scattering / with Kulla-Conty's lobe (`ibl::energy::kulla_conty_ggx`, \
          built-in E and E_avg tables). 1 is ideal.\n"
     );
     let thetas = [0.0, 30.0, 60.0, 75.0, 85.0];
-    print!("| alpha |");
+    out!("| alpha |");
     for t in thetas {
-        print!(" {t} deg |");
+        out!(" {t} deg |");
     }
-    println!("\n|---|{}", "---|".repeat(thetas.len()));
+    outln!("\n|---|{}", "---|".repeat(thetas.len()));
     let wo = |deg: f64| {
         let t = f64::to_radians(deg);
         DVec3::new(t.sin(), 0.0, t.cos())
@@ -209,7 +209,7 @@ pub fn energy_section() {
         let Ok(g) = Ggx::isotropic(alpha) else {
             continue;
         };
-        print!("| {alpha} |");
+        out!("| {alpha} |");
         for t in thetas {
             let ss =
                 |o: DVec3, i: DVec3| cook_torrance::eval(&g, V3::from(o), V3::from(i), |_| 1.0);
@@ -218,19 +218,19 @@ pub fn energy_section() {
                 ss(o, i) + energy::kulla_conty_ggx(o.z, i.z, alpha, 1.0)
             })
             .value;
-            print!(" {before:.3} / {after:.4} |");
+            out!(" {before:.3} / {after:.4} |");
         }
-        println!();
+        outln!();
     }
     let gold = V3::new(1.0, 0.78, 0.34);
-    println!(
+    outln!(
         "\nA coloured F0 (gold-like {:?}, Schlick): albedo at normal view, single scattering / \
          compensated, and the red-to-blue ratio (Kulla-Conty's F_ms = F_avg^2 E_avg / (1 - \
          F_avg (1 - E_avg)) saturates the colour as the light bounces).\n",
         gold.to_array()
     );
-    println!("| alpha | single scattering | compensated | r / b before | r / b after |");
-    println!("|---|---|---|---|---|");
+    outln!("| alpha | single scattering | compensated | r / b before | r / b after |");
+    outln!("|---|---|---|---|---|");
     for alpha in [0.25f64, 0.5, 1.0] {
         let Ok(g) = Ggx::isotropic(alpha.max(ALPHA_MIN)) else {
             continue;
@@ -248,7 +248,7 @@ pub fn energy_section() {
             })
             .value;
         }
-        println!(
+        outln!(
             "| {alpha} | {:.3} {:.3} {:.3} | {:.3} {:.3} {:.3} | {:.2} | {:.2} |",
             before[0],
             before[1],

@@ -1,0 +1,286 @@
+//! The report's checks of the crate's tools: the integrators on known integrals, the lanes
+//! against scalar, NDF normalization, Smith's weak furnace, the tonemapping table, the
+//! accuracy table, and the sphere renders.
+
+use brdf::cook_torrance;
+use brdf::frame::Frame;
+use brdf::ggx::Ggx;
+use brdf::integrate::{self, Config, Estimate};
+use brdf::microfacet::Microfacet;
+use brdf::tonemap::{AgxLook, Operator};
+use brdf::wide::f32x8;
+use brdf::{Real, V3, beckmann, color, fresnel};
+use core::f64::consts::PI;
+use glam::DVec3;
+
+fn row(name: &str, e: Estimate, exact: f64) {
+    outln!(
+        "| {name:<34} | {:>15.12} | {:>15.12} | {:>9.2e} | {:>9.2e} | {:>7} |",
+        e.value,
+        exact,
+        (e.value - exact).abs(),
+        e.error,
+        e.evaluations
+    );
+}
+
+pub fn integrator_checks() {
+    outln!("## Integrators on known integrals (default budget)\n");
+    outln!("| integrand | estimate | exact | actual err | reported | evals |");
+    outln!("|---|---|---|---|---|---|");
+    let cfg = Config::default();
+    row("cos(theta)", integrate::hemisphere(|w| w.z, &[], &cfg), PI);
+    for n in [1.0, 10.0, 100.0, 1000.0, 10000.0] {
+        row(
+            &format!("cos^{n}(theta)"),
+            integrate::hemisphere(|w| w.z.powf(n), &[], &cfg),
+            2.0 * PI / (n + 1.0),
+        );
+    }
+    for rho in [0.18, 1.0] {
+        let wo = DVec3::new(0.6, 0.0, 0.8);
+        row(
+            &format!("Lambert albedo, rho = {rho}"),
+            integrate::directional_albedo(wo, |_, _| rho / PI),
+            rho,
+        );
+    }
+    let n = 10_000.0;
+    let wo = DVec3::new(0.6, 0.0, 0.8);
+    let r = DVec3::new(-wo.x, -wo.y, wo.z);
+    row(
+        "Phong n=1e4 about mirror, 37 deg",
+        integrate::directional_albedo(wo, |_, wi| {
+            (n + 2.0) / (2.0 * PI) * r.dot(wi).max(0.0).powf(n)
+        }),
+        wo.z,
+    );
+    let classic = integrate::reciprocity(|a, b| {
+        let r = DVec3::new(-a.x, -a.y, a.z);
+        r.dot(b).max(0.0).powi(4) / b.z
+    });
+    outln!(
+        "\nreciprocity of classic Phong (1 / n.l factor): max relative asymmetry {:.3} over {} pairs",
+        classic.max_rel,
+        classic.pairs
+    );
+}
+
+pub fn lane_checks() {
+    outln!("\n## Lanes against scalar (f32x8 vs f32, 100 000 points in [-10, 10])\n");
+    outln!("| function | max ULP |");
+    outln!("|---|---|");
+    type Pair = (&'static str, fn(f32) -> f32, fn(f32x8) -> f32x8);
+    let fns: [Pair; 6] = [
+        ("exp", Real::exp, Real::exp),
+        ("ln", Real::ln, Real::ln),
+        ("sin", Real::sin, Real::sin),
+        ("atan", Real::atan, Real::atan),
+        ("erf", Real::erf, Real::erf),
+        ("sqrt", Real::sqrt, Real::sqrt),
+    ];
+    for (name, s, l) in fns {
+        let mut worst = 0u32;
+        for k in 0..100_000 / 8 {
+            let v = f32x8::from_fn(|i| -10.0 + 20.0 * (8 * k + i) as f32 / 100_000.0);
+            for i in 0..8 {
+                let (a, b) = (l(v).lane(i), s(v.lane(i)));
+                if !(a.is_nan() && b.is_nan()) {
+                    worst =
+                        worst.max((a.to_bits() as i64 - b.to_bits() as i64).unsigned_abs() as u32);
+                }
+            }
+        }
+        outln!("| {name} | {worst} |");
+    }
+}
+
+pub fn microfacet_checks() {
+    outln!("\n## NDF normalization: integral of D(m) cos(theta_m) dm (should be 1)\n");
+    outln!("| alpha_x x alpha_y | GGX | Beckmann |");
+    outln!("|---|---|---|");
+    for (ax, ay) in [
+        (0.01, 0.01),
+        (0.1, 0.1),
+        (0.5, 0.5),
+        (1.0, 1.0),
+        (1.0, 0.01),
+        (0.5, 0.05),
+    ] {
+        let g = Ggx::new(ax, ay).expect("valid alpha");
+        let b = beckmann::Beckmann::new(ax, ay).expect("valid alpha");
+        let eg = integrate::ndf_projected_area(|m| g.d(V3::from(m)));
+        let eb = integrate::ndf_projected_area(|m| b.d(V3::from(m)));
+        outln!("| {ax} x {ay} | {:.9} | {:.9} |", eg.value, eb.value);
+    }
+    outln!("\n## Smith weak white furnace (should be 1)\n");
+    outln!("| alpha | theta_o | GGX | Beckmann |");
+    outln!("|---|---|---|---|");
+    for alpha in [0.01, 0.2, 1.0] {
+        let g = Ggx::new(alpha, alpha).expect("valid alpha");
+        let b = beckmann::Beckmann::new(alpha, alpha).expect("valid alpha");
+        for deg in [0.0f64, 60.0, 89.0, 89.9] {
+            let t = deg.to_radians();
+            let wo = DVec3::new(t.sin(), 0.0, t.cos());
+            let (g1g, g1b) = (g.g1(V3::from(wo)), b.g1(V3::from(wo)));
+            let eg = integrate::smith_weak_furnace(wo, |m| g.d(V3::from(m)), |_, _| g1g);
+            let eb = integrate::smith_weak_furnace(wo, |m| b.d(V3::from(m)), |_, _| g1b);
+            outln!("| {alpha} | {deg} | {:.7} | {:.7} |", eg.value, eb.value);
+        }
+    }
+}
+
+pub fn tonemap_table() {
+    outln!("\n## Tonemapping operators on grey input (display-linear output)\n");
+    let inputs = [0.0, 0.18, 1.0, 4.0, 16.0, 1e3, f64::INFINITY];
+    out!("| operator |");
+    for x in inputs {
+        out!(" {x} |");
+    }
+    outln!();
+    outln!("|---|{}", "---|".repeat(inputs.len()));
+    for op in Operator::all() {
+        out!("| {} |", op_name(&op));
+        for x in inputs {
+            out!(" {:.4} |", op.apply(V3::splat(x)).y);
+        }
+        outln!();
+    }
+}
+
+pub fn op_name(op: &Operator) -> String {
+    match op {
+        Operator::AgxMinimal(look) | Operator::AgxFilament(look) if *look != AgxLook::BASE => {
+            let which = if matches!(op, Operator::AgxMinimal(_)) {
+                "AgxMinimal"
+            } else {
+                "AgxFilament"
+            };
+            let name = if *look == AgxLook::PUNCHY {
+                "punchy"
+            } else {
+                "golden"
+            };
+            format!("{which} {name}")
+        }
+        _ => format!("{op:?}")
+            .split('(')
+            .next()
+            .unwrap_or("?")
+            .to_string(),
+    }
+}
+
+/// An 8-bit RGB image.
+pub struct Image {
+    /// Width in pixels.
+    pub w: usize,
+    /// Height in pixels.
+    pub h: usize,
+    /// RGB8, row by row.
+    pub px: Vec<u8>,
+}
+
+impl Image {
+    fn new(w: usize, h: usize, bg: [u8; 3]) -> Self {
+        Self {
+            w,
+            h,
+            px: bg.iter().copied().cycle().take(w * h * 3).collect(),
+        }
+    }
+    fn set(&mut self, x: usize, y: usize, c: [u8; 3]) {
+        if x < self.w && y < self.h {
+            let i = 3 * (y * self.w + x);
+            self.px[i..i + 3].copy_from_slice(&c);
+        }
+    }
+}
+
+fn quantize(x: f32) -> u8 {
+    (x.clamp(0.0, 1.0) * 255.0).round() as u8
+}
+
+/// The perceptual roughness of each column of [`render_spheres`].
+pub const SPHERE_ROUGHNESS: [f32; 6] = [0.05, 0.2, 0.4, 0.6, 0.8, 1.0];
+
+/// Cook-Torrance spheres on f32x8 lanes: 8 pixels per evaluation.
+pub fn render_spheres() -> Image {
+    const S: usize = 128;
+    let roughness = SPHERE_ROUGHNESS;
+    let mut img = Image::new(S * roughness.len(), 2 * S, [24, 24, 28]);
+    let light = V3::new(-0.45f32, 0.55, 0.7);
+    let light = light * light.length().recip();
+    let view = V3::new(0.0f32, 0.0, 1.0);
+    let splat = |v: V3<f32>| V3::new(f32x8::splat(v.x), f32x8::splat(v.y), f32x8::splat(v.z));
+    let (l_w, v_w) = (splat(light), splat(view));
+    let base = V3::new(f32x8::splat(0.6), f32x8::splat(0.08), f32x8::splat(0.05));
+    let gold_eta = V3::new(
+        f32x8::splat(0.143),
+        f32x8::splat(0.374),
+        f32x8::splat(1.442),
+    );
+    let gold_k = V3::new(
+        f32x8::splat(3.983),
+        f32x8::splat(2.385),
+        f32x8::splat(1.603),
+    );
+    let tonemap = Operator::AcesHill;
+    for (col, &r) in roughness.iter().enumerate() {
+        let alpha = brdf::microfacet::alpha_from_perceptual(f32x8::splat(r));
+        let Ok(dist) = Ggx::isotropic(alpha) else {
+            continue;
+        };
+        for row in 0..2 {
+            for py in 0..S {
+                for px0 in (0..S).step_by(8) {
+                    // Sphere normal at each of 8 pixels.
+                    let x = f32x8::from_fn(|i| ((px0 + i) as f32 + 0.5) / S as f32 * 2.0 - 1.0);
+                    let y = f32x8::splat(1.0 - (py as f32 + 0.5) / S as f32 * 2.0);
+                    let r2 = x * x + y * y;
+                    let inside = r2.simd_lt(f32x8::splat(0.92 * 0.92));
+                    let z = (f32x8::splat(0.92 * 0.92) - r2).sqrt_nonneg();
+                    let n = V3::new(x, y, z).normalize_or(V3::unit_z());
+                    let frame = Frame::from_normal(n);
+                    let (wo, wi) = (frame.to_local(v_w), frame.to_local(l_w));
+                    let n_dot_l = wi.z.max(f32x8::ZERO);
+                    let radiance = if row == 0 {
+                        // Dielectric coat over a red Lambertian base, diffuse weighted by 1 - F.
+                        let spec = cook_torrance::dielectric(&dist, wo, wi, f32x8::splat(1.5));
+                        let kd = f32x8::ONE - fresnel::dielectric(wo.z, f32x8::splat(1.5));
+                        let diffuse = base * (kd * f32x8::FRAC_1_PI);
+                        let f = diffuse + V3::splat(spec);
+                        f * (f32x8::splat(3.0) * n_dot_l) + base * f32x8::splat(0.03)
+                    } else {
+                        let f = cook_torrance::eval_rgb(&dist, wo, wi, |c| {
+                            fresnel::conductor_rgb(c, gold_eta, gold_k)
+                        });
+                        let ambient =
+                            fresnel::conductor_rgb(wo.z, gold_eta, gold_k) * f32x8::splat(0.05);
+                        f * (f32x8::splat(3.0) * n_dot_l) + ambient
+                    };
+                    let display = color::srgb_oetf_rgb(tonemap.apply(radiance));
+                    for i in 0..8 {
+                        if inside.lane(i) != 0.0 {
+                            let c = display.lane(i);
+                            img.set(
+                                col * S + px0 + i,
+                                row * S + py,
+                                [quantize(c.x), quantize(c.y), quantize(c.z)],
+                            );
+                        }
+                    }
+                }
+            }
+        }
+    }
+    img
+}
+
+/// The per-function ULP table against the correctly rounded MPFR oracle. Measuring it needs
+/// GMP and MPFR (the `brdf-oracle` workspace member); `.ci/run` re-measures it on every run
+/// and fails if this committed copy differs, so what the report prints is current.
+pub fn accuracy_table() {
+    outln!("\n## Exact functions against the correctly rounded oracle (max ULP)\n");
+    out!("{}", include_str!("../../../docs/accuracy.md"));
+}

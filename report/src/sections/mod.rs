@@ -1,0 +1,6 @@
+//! The report's sections on the crate's checks (carried over from the first report).
+
+pub mod checks;
+pub mod ibl;
+pub mod lobes;
+pub mod tonemap;
