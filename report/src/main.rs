@@ -299,8 +299,15 @@ fn energy_section(grids: &[energy::Grid], dir: &Path) -> Result<Vec<String>, Box
     outln!(
         "rho(theta_o) = integral of f cos theta_i over the hemisphere, by \
          `brdf::integrate::directional_albedo` (adaptive cubature, error below 1e-5 here). 1 \
-         is a white furnace; below 1 is energy lost (single scattering), above 1 created.\n"
+         is a white furnace; below 1 is energy lost (single scattering), above 1 created (the \
+         glTF dielectric at grazing view: its diffuse layer is weighted by 1 - F(v.h) while its \
+         specular layer reflects F, as the glTF specification's fresnel_mix does). All heat \
+         maps share one colour scale.\n"
     );
+    let top = grids
+        .iter()
+        .flat_map(|g| g.albedo.iter().flatten())
+        .fold(1.05f64, |m, &a| if a.is_finite() { m.max(a) } else { m });
     let mut files = Vec::new();
     for g in grids {
         outln!("### {}\n", g.model);
@@ -326,7 +333,7 @@ fn energy_section(grids: &[energy::Grid], dir: &Path) -> Result<Vec<String>, Box
             &g.roughness,
             &g.albedo,
             "directional albedo (1 = no loss)",
-            (0.4, 1.05),
+            (0.3, top),
         )?;
         outln!("\n![{}]({name})\n", g.model);
         files.push(name);
