@@ -19,11 +19,12 @@
 //! (glTF / Filament: Schlick with an RGB F0) and `ggx_dielectric` (the exact dielectric
 //! Fresnel of eta), with the same three for Beckmann (`beckmann_conductor_rgb`, ...).
 
-use crate::domain::{above_horizon, any_nan3, nan_where};
+use crate::domain::{above_horizon, nan_where};
 use crate::fresnel;
 use crate::microfacet::Microfacet;
 use crate::real::Real;
 use crate::vec3::V3;
+use crate::vec3::any_nan3;
 
 /// The half vector h = normalize(wo + wi) and v.h, with the guard for wo = -wi (h undefined):
 /// h falls back to the normal there, which only happens below the horizon, where `eval`

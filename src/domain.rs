@@ -67,10 +67,3 @@ pub(crate) fn above<T: Real>(c: T, value: T) -> T {
 pub(crate) fn nan_where<T: Real>(bad: T::Mask, value: T) -> T {
     T::select(bad, T::splat(f64::NAN), value)
 }
-
-/// True in lanes where any component of `v` is NaN.
-#[inline]
-#[must_use]
-pub(crate) fn any_nan3<T: Real>(v: crate::vec3::V3<T>) -> T::Mask {
-    v.x.is_nan() | v.y.is_nan() | v.z.is_nan()
-}

@@ -57,7 +57,7 @@ impl<T: Real> Frame<T> {
         let b = V3::new(c, s + n.y * n.y * a, -n.y);
         // Some axes skip a component (b.z = -n.y whatever n.x is; copysign turns a NaN n.z into
         // a sign): a NaN anywhere in n gives an all-NaN frame, never a plausible axis.
-        let bad = crate::domain::any_nan3(n);
+        let bad = crate::vec3::any_nan3(n);
         let nan = |v: V3<T>| V3::select(bad, V3::splat(T::splat(f64::NAN)), v);
         Self {
             t: nan(t),

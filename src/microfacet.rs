@@ -26,10 +26,11 @@
 //! `cargo run --release --example shader_port` ports Filament's and Unreal Engine 4's GGX to
 //! this crate and checks the conventions numerically.
 
-use crate::domain::{any_nan3, nan_unless, nan_where};
+use crate::domain::{nan_unless, nan_where};
 use crate::error::{ParamError, require};
 use crate::real::Real;
 use crate::vec3::V3;
+use crate::vec3::any_nan3;
 
 /// The smallest alpha the kernels evaluate with; smaller (including 0) is clamped up to it. As a
 /// perceptual roughness ([`alpha_from_perceptual`]): r = 0.01. Filament clamps higher, at r = 0.045

@@ -40,9 +40,10 @@
 //! Fresnel closure of the caller's; `ggx_reflection_pdf` and `beckmann_reflection_pdf` give
 //! the same pdf for any (wo, wi), for multiple importance sampling.
 
-use crate::domain::{any_nan3, nan_where};
+use crate::domain::nan_where;
 use crate::real::Real;
 use crate::vec3::V3;
+use crate::vec3::any_nan3;
 
 #[cfg(feature = "beckmann")]
 use crate::beckmann::Beckmann;

@@ -242,10 +242,7 @@ impl<T: Real> V3<T> {
     #[inline]
     #[must_use]
     pub fn min_element(self) -> T {
-        crate::domain::nan_where(
-            crate::domain::any_nan3(self),
-            self.x.min(self.y).min(self.z),
-        )
+        crate::domain::nan_where(any_nan3(self), self.x.min(self.y).min(self.z))
     }
 
     /// The largest component (the peak of a colour); NaN if any component is NaN.
@@ -258,10 +255,7 @@ impl<T: Real> V3<T> {
     #[inline]
     #[must_use]
     pub fn max_element(self) -> T {
-        crate::domain::nan_where(
-            crate::domain::any_nan3(self),
-            self.x.max(self.y).max(self.z),
-        )
+        crate::domain::nan_where(any_nan3(self), self.x.max(self.y).max(self.z))
     }
 
     /// Component-wise absolute value.
@@ -575,4 +569,11 @@ impl V3<f64x4> {
     pub fn to_lanes(self) -> [DVec3; 4] {
         self.into()
     }
+}
+
+/// True in lanes where any component of `v` is NaN.
+#[inline]
+#[must_use]
+pub(crate) fn any_nan3<T: Real>(v: V3<T>) -> T::Mask {
+    v.x.is_nan() | v.y.is_nan() | v.z.is_nan()
 }

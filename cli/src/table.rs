@@ -2756,6 +2756,24 @@ pub static KERNELS: &[Kernel] = &[
         "Hable's filmic curve (Uncharted 2) per channel, Hable 2010",
         [c: HDR, p_a: POS, p_b: POS, p_c: POS, p_d: POS, p_e: POS, p_f: POS, p_white: POS,
          p_exposure_bias: POS] -> [out: DISPLAY],
+        where [Constraint::Holds {
+            text: "HableParams::new accepts the parameters: the curve reaches white, \
+                   F(W) = ((F - E) A W + B (F C - E)) / ... > 0, and its coefficients are finite",
+            args: &["p_a", "p_b", "p_c", "p_d", "p_e", "p_f", "p_white", "p_exposure_bias"],
+            check: |v| {
+                HableParams::new(
+                    v.get("p_a"),
+                    v.get("p_b"),
+                    v.get("p_c"),
+                    v.get("p_d"),
+                    v.get("p_e"),
+                    v.get("p_f"),
+                    v.get("p_white"),
+                    v.get("p_exposure_bias"),
+                )
+                .is_ok()
+            },
+        }],
         built(
             HableParams::new(
                 f64_of(p_a),
@@ -2776,9 +2794,20 @@ pub static KERNELS: &[Kernel] = &[
         [c: HDR, contrast: POS, shoulder: POS, hdr_max: POS, mid_in: POS,
          mid_out: Domain::new(0.0, true, 1.0, true, "(0, 1)")] -> [out: DISPLAY],
         where [Constraint::Holds {
-            text: "mid_in < hdr_max",
-            args: &["mid_in", "hdr_max"],
-            check: |v| v.get("mid_in") < v.get("hdr_max"),
+            text: "mid_in < hdr_max, contrast <= LOTTES_CONTRAST_MAX, and the derived b, c \
+                   finite with c != 0 (LottesParams::new accepts the parameters)",
+            args: &["contrast", "shoulder", "hdr_max", "mid_in", "mid_out"],
+            check: |v| {
+                v.get("mid_in") < v.get("hdr_max")
+                    && LottesParams::new(
+                        v.get("contrast"),
+                        v.get("shoulder"),
+                        v.get("hdr_max"),
+                        v.get("mid_in"),
+                        v.get("mid_out"),
+                    )
+                    .is_ok()
+            },
         }],
         built(
             LottesParams::new(
@@ -2799,12 +2828,16 @@ pub static KERNELS: &[Kernel] = &[
          black: POS, pedestal: Domain::FINITE] -> [out: DISPLAY],
         where [Constraint::Holds {
             text: "linear_start + contrast l0 < max_brightness, \
-                   l0 = (max_brightness - linear_start) linear_length / contrast",
+                   l0 = (max_brightness - linear_start) linear_length / contrast, with \
+                   S0 = linear_start + l0, S1 = linear_start + contrast l0 and \
+                   max_brightness - S1 finite",
             args: &["max_brightness", "contrast", "linear_start", "linear_length"],
             check: |v| {
                 let (pm, a) = (v.get("max_brightness"), v.get("contrast"));
                 let (m, l) = (v.get("linear_start"), v.get("linear_length"));
-                m + a * ((pm - m) * l / a) < pm
+                let l0 = (pm - m) * l / a;
+                let (s0, s1) = (m + l0, m + a * l0);
+                s1 < pm && s0.is_finite() && s1.is_finite() && (pm - s1).is_finite()
             },
         }],
         {

@@ -175,22 +175,7 @@ fn conditioned(
     reference: fn(&[Float]) -> Float,
     ill: bool,
 ) -> Vec<Vec<f64>> {
-    conditioned_in(ty, all, reference, harness::FIRST, ill)
-}
-
-/// [`conditioned`] with the condition number taken in the coordinates `perturbed`.
-pub(crate) fn conditioned_in(
-    ty: Ty,
-    all: fn(Ty) -> Vec<Vec<f64>>,
-    reference: fn(&[Float]) -> Float,
-    perturbed: &[usize],
-    ill: bool,
-) -> Vec<Vec<f64>> {
-    all(ty)
-        .into_iter()
-        .map(|p| p.into_iter().map(|x| ty.round(x)).collect::<Vec<f64>>())
-        .filter(|p| (harness::condition(reference, ty, p, perturbed) > harness::KAPPA_MAX) == ill)
-        .collect()
+    harness::conditioned_in(ty, all, reference, harness::FIRST, ill)
 }
 
 fn ref_dielectric(x: &[Float]) -> Float {

@@ -343,6 +343,24 @@ fn cache() -> &'static Cache {
     CACHE.get_or_init(Default::default)
 }
 
+/// The points of `all` (rounded to `ty`) whose condition number for `reference` in the
+/// coordinates `perturbed` ([`condition`]) is at most [`KAPPA_MAX`] (`ill` false: a case's main
+/// row) or above it (`ill` true: its `(ill-conditioned)` row). Shared by `cases` and
+/// `tonemap_cases`, which both depend on this module and not on each other.
+pub fn conditioned_in(
+    ty: Ty,
+    all: fn(Ty) -> Vec<Vec<f64>>,
+    reference: fn(&[Float]) -> Float,
+    perturbed: &[usize],
+    ill: bool,
+) -> Vec<Vec<f64>> {
+    all(ty)
+        .into_iter()
+        .map(|p| p.into_iter().map(|x| ty.round(x)).collect::<Vec<f64>>())
+        .filter(|p| (condition(reference, ty, p, perturbed) > KAPPA_MAX) == ill)
+        .collect()
+}
+
 /// The points of `case` for `ty`, each coordinate rounded to `ty`.
 #[must_use]
 pub fn points_for(case: &Case, ty: Ty) -> Vec<Vec<f64>> {

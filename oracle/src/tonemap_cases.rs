@@ -7,8 +7,7 @@ use brdf::tonemap::{self, AgxLook, HableParams, LottesParams, UchimuraParams};
 use brdf::{Real, V3};
 use rug::Float;
 
-use crate::cases::conditioned_in;
-use crate::harness::{self, Case, Family, Ty};
+use crate::harness::{self, Case, Family, Ty, conditioned_in};
 use crate::kernel;
 use crate::points::{Rng, around, random};
 use crate::reference::num;

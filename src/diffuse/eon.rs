@@ -36,11 +36,12 @@
 //! As everywhere in this crate, a parameter outside its domain gives NaN for every pair of
 //! directions, those below the horizon included, and a NaN input gives NaN.
 
-use crate::domain::{above_horizon, any_nan3, checked_unit, in_unit, nan_unless, nan_where};
+use crate::domain::{above_horizon, checked_unit, in_unit, nan_unless, nan_where};
 use crate::dw::Dw;
 use crate::error::{ParamError, require};
 use crate::real::Real;
 use crate::vec3::V3;
+use crate::vec3::any_nan3;
 
 /// c1 = 1/2 - 2/(3 pi) = G(0)/pi: Fujii's normalization A = 1/(1 + c1 sigma) makes the FON
 /// albedo exactly 1 at grazing incidence and below 1 elsewhere.
@@ -100,7 +101,14 @@ fn rho_ms_with<T: Real>(rho: T, sigma: T, a: T) -> T {
     let e_avg = T::splat(C2).mul_add(sigma, T::ONE) * a;
     // 1 - rho (1 - E_avg) >= E_avg >= 0.83 on the domain: no division by zero.
     let one_minus_e_avg = sigma * T::splat(C1_MINUS_C2) * a;
-    rho * rho * e_avg / (-rho).mul_add(one_minus_e_avg, T::ONE)
+    let q = rho * rho * e_avg / (-rho).mul_add(one_minus_e_avg, T::ONE);
+    // rho_ms <= rho on the domain (rho^2 E_avg <= rho (1 - rho (1 - E_avg)) is rho <= 1), and
+    // rho_ms = 1 at rho = 1, but E_avg and 1 - E_avg are rounded separately, so the quotient
+    // can land an ulp off (1 + 2^-23 in f32 at rho = 1, sigma = 1e-6; 1 - 2^-24 at sigma =
+    // 3e-3): capped at rho, and exactly 1 at rho = 1 (a NaN sigma's NaN E_avg kept there).
+    // NaN propagates (`min` keeps a NaN in self; a NaN rho makes the quotient NaN).
+    let one = T::select(e_avg.is_nan(), e_avg, T::ONE);
+    T::select(rho.simd_eq(T::ONE), one, q.min(rho))
 }
 
 /// The EON kernel with a given G/pi (exact or fitted).
@@ -248,8 +256,10 @@ pub fn eon_fon_average_albedo<T: Real>(sigma: T) -> T {
 /// the compensation lobe takes: the sum of the albedo series of light that bounces more than
 /// once, each bounce scaled by rho (E_avg from [`eon_fon_average_albedo`]).
 ///
-/// Domain: rho in [0, 1] and sigma in [0, 1] (NaN outside). Edges: rho_ms = rho^2 at sigma = 0;
-/// rho_ms = 1 at rho = 1 for every sigma (so the white furnace returns 1); 0 at rho = 0.
+/// Domain: rho in [0, 1] and sigma in [0, 1] (NaN outside). Range: [0, rho] (the rounded
+/// quotient is capped at rho, which it never exceeds in exact arithmetic). Edges: rho_ms =
+/// rho^2 at sigma = 0; rho_ms = 1 exactly at rho = 1 for every sigma (so the white furnace
+/// returns 1); 0 at rho = 0.
 ///
 /// Source: Portsmouth, Kutz, Hill 2025 (`rho_ms` in the `f_EON` listing).
 #[inline]

@@ -32,11 +32,12 @@
 //!   [`ParamError`]), with `eval(wo, wi)` on local-frame unit vectors
 //!   (normal = +z).
 
-use crate::domain::{above_horizon, any_nan3, in_unit, nan_unless, nan_where};
+use crate::domain::{above_horizon, in_unit, nan_unless, nan_where};
 use crate::dw::Dw;
 use crate::error::{ParamError, require};
 use crate::real::Real;
 use crate::vec3::V3;
+use crate::vec3::any_nan3;
 
 mod burley;
 mod coupling;

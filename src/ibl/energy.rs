@@ -433,12 +433,15 @@ pub fn kulla_conty_ggx_rgb<T: Real>(n_dot_v: T, n_dot_l: T, alpha: T, f_avg: V3<
 /// split-sum of image-based lighting does not need.
 ///
 /// Domain: e in (0, 1], f in [0, 1]; e <= 0 or > 1, f outside [0, 1], and NaN give NaN.
-/// Output in [1, 1 / e].
+/// Output in [1, 1 / e], capped at the largest finite value (e below 1 / MAX); f = 0 gives
+/// exactly 1 for every e.
 #[inline]
 #[must_use]
 pub fn turquin_scale<T: Real>(e: T, f: T) -> T {
     let ok = e.simd_gt(T::ZERO) & e.simd_le(T::ONE) & in_unit(f);
-    let v = f.mul_add((T::ONE - e) / e, T::ONE);
+    // (1 - e) / e overflows to +inf for e below 1 / MAX; capped first, so f = 0 gives
+    // 0 * MAX + 1 = 1 instead of 0 * inf = NaN.
+    let v = f.mul_add(((T::ONE - e) / e).min(T::MAX), T::ONE);
     nan_unless(ok, v.min(T::MAX))
 }
 

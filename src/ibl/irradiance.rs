@@ -31,10 +31,11 @@
 
 use core::f64::consts::PI;
 
-use crate::domain::{any_nan3, nan_where};
+use crate::domain::nan_where;
 use crate::frame::Frame;
 use crate::real::Real;
 use crate::vec3::V3;
+use crate::vec3::any_nan3;
 
 /// Node `k` (descending: k = 0 is the largest) and weight of the `order`-point Gauss-Legendre
 /// rule on [-1, 1], which integrates polynomials of degree <= 2 order - 1 exactly.

@@ -37,12 +37,13 @@
 //! assert!((l - 2.0).abs() < 1e-12);
 //! ```
 
-use crate::domain::{above, any_nan3, nan_where};
+use crate::domain::{above, nan_where};
 use crate::ggx::Ggx;
 use crate::microfacet::Microfacet;
 use crate::real::Real;
 use crate::sampling;
 use crate::vec3::V3;
+use crate::vec3::any_nan3;
 
 /// One prefilter sample in the local frame of the reflection direction r (= +z).
 #[derive(Clone, Copy, Debug, PartialEq)]

@@ -3,11 +3,12 @@
 
 use super::{per_channel, sanitize, sanitize_rgb, saturate_rgb};
 use crate::color::{self, ACES_HILL_INPUT, ACES_HILL_OUTPUT, luminance};
-use crate::domain::{any_nan3, nan_unless, nan_where};
+use crate::domain::{nan_unless, nan_where};
 use crate::dw::{Dw, two_sum};
 use crate::error::{ParamError, require};
 use crate::real::Real;
 use crate::vec3::V3;
+use crate::vec3::any_nan3;
 
 /// True for f32 and its lanes (a 24-bit significand), where f64 arithmetic is exact enough.
 #[inline]
@@ -92,7 +93,8 @@ pub fn reinhard_luminance<T: Real>(c: V3<T>) -> V3<T> {
 /// L' = L (1 + L / w^2) / (1 + L), colour scaled by L' / L = (1 + L / w^2) / (1 + L) (so a
 /// black colour stays black), channels clamped to [0, 1]. Keeps hue; a grey reaches 1 at
 /// L = w. w in (0, MAX]; 0, negative, +inf and NaN give NaN (in every channel), as does a NaN
-/// channel. L / w^2 is formed as (L / w) / w, as in [`reinhard_extended`].
+/// channel. L / w^2 is formed as (L / w) / w, as in [`reinhard_extended`], and 1 + L / w^2
+/// is capped at the largest finite value, so a tiny white point keeps a zero channel at 0.
 ///
 /// Peers: none of three.js, Filament and bevy ships it.
 #[inline]
@@ -101,7 +103,11 @@ pub fn reinhard_extended_luminance<T: Real>(c: V3<T>, white: T) -> V3<T> {
     let c = sanitize_rgb(c);
     let ok = white.simd_gt(T::ZERO) & white.simd_le(T::MAX);
     let l = luminance(c);
-    let num = T::ONE + l / white / white;
+    // Capped: for a tiny white point L / w / w overflows to +inf, and a zero channel would
+    // then give 0 * inf = NaN. Capped at MAX, a bright lane's channels still saturate to 1
+    // (its L / w^2 exceeds MAX, so every nonzero channel's x * num / den does) and a zero
+    // channel stays 0; below the cap nothing changes.
+    let num = (T::ONE + l / white / white).min(T::MAX);
     let den = T::ONE + l;
     per_channel(c, |x| nan_unless(ok, (x * num / den).saturate()))
 }
@@ -306,7 +312,17 @@ impl HableParams {
         exposure_bias: 2.0,
     };
 
-    /// Validated parameters: all finite and > 0 (the curve then rises from F(0) = 0).
+    /// Validated parameters: all finite and > 0, with
+    /// - F(W) > 0, i.e. (F - E) A W + B (F C - E) > 0 (rejected as `e`): [`hable`] divides by
+    ///   F(W), and where it is <= 0 the curve never reaches 1 (E = F with C = 1 makes F zero
+    ///   everywhere, 0 / 0);
+    /// - the curve's coefficients (products of up to five parameters, formed in f64) finite
+    ///   and F(W) not underflowing to 0 (rejected as `white`): every parameter in
+    ///   [1e-45, 1e61] suffices, far beyond any curve's (Hable's are 0.02 to 11.2).
+    ///
+    /// The curve then starts at F(0) = 0 and reaches 1 at input W / bias; it rises
+    /// monotonically between when E < F, E < F C and C <= 1 (Hable's values qualify);
+    /// otherwise it can dip below 0 near black or fall past a peak (both clamped to [0, 1]).
     #[allow(clippy::too_many_arguments)]
     pub fn new(
         a: f64,
@@ -330,7 +346,7 @@ impl HableParams {
         ] {
             require::<f64>(v > 0.0 && v.is_finite(), name, "finite and > 0")?;
         }
-        Ok(Self {
+        let p = Self {
             a,
             b,
             c,
@@ -339,7 +355,19 @@ impl HableParams {
             f,
             white,
             exposure_bias,
-        })
+        };
+        require::<f64>(
+            (f - e) * a * white + b * (f * c - e) > 0.0,
+            "e",
+            "with the other parameters, F(W) > 0: (F - E) A W + B (F C - E) > 0",
+        )?;
+        require::<f64>(
+            p.folded(true).is_some() && p.folded(false).is_some(),
+            "white",
+            "with the other parameters, the curve's coefficients finite in f64 and F(W) not \
+             underflowing to 0 (every parameter in [1e-45, 1e61] suffices)",
+        )?;
+        Ok(p)
     }
 
     /// True when every field is finite and > 0, the domain [`HableParams::new`] enforces.
@@ -356,6 +384,48 @@ impl HableParams {
         ]
         .iter()
         .all(|v| *v > 0.0 && v.is_finite())
+    }
+
+    /// The coefficients [P b^2, Q b, R b^2 K, S b K, T K] of F(b x) / K, K = F(W) (see
+    /// [`coefficients`](Self::coefficients)), in double-word f64 or, for `plain`, plain f64
+    /// (enough for f32 lanes), scaled by one power of two so the largest magnitude lies in
+    /// [0.5, 1). The scaling is exact and cancels in the quotient, so it changes no result,
+    /// but keeps x^2 times a coefficient finite in f32 for parameters far from 1. `None`
+    /// where a coefficient is not finite or K is not > 0 (the domain [`HableParams::new`]
+    /// enforces).
+    fn folded(&self, plain: bool) -> Option<[f64; 5]> {
+        let (k, coef) = if plain {
+            let (a, b, c, d, e, f) = (self.a, self.b, self.c, self.d, self.e, self.f);
+            let (cp, cq, cr, cs, ct) = ((f - e) * a, b * (f * c - e), f * a, f * b, d * f * f);
+            let w = self.white;
+            let k = w * (cp * w + cq) / ((cr * w + cs) * w + ct);
+            let bias = self.exposure_bias;
+            let b2 = bias * bias;
+            (k, [cp * b2, cq * bias, cr * b2 * k, cs * bias * k, ct * k])
+        } else {
+            let k = self.curve_dw(Dw::exact(self.white));
+            let bias = Dw::exact(self.exposure_bias);
+            let [cp, cq, cr, cs, ct] = self.coefficients();
+            let b2 = bias.sq();
+            (
+                k.value(),
+                [
+                    cp.mul(b2),
+                    cq.mul(bias),
+                    cr.mul(b2).mul(k),
+                    cs.mul(bias).mul(k),
+                    ct.mul(k),
+                ]
+                .map(Dw::value),
+            )
+        };
+        let big = coef.iter().fold(0.0_f64, |m, v| m.max(v.abs()));
+        // `!(k > 0)` also rejects a NaN K.
+        if !(k > 0.0 && k.is_finite() && big.is_finite()) || coef.iter().any(|v| v.is_nan()) {
+            return None;
+        }
+        let (_, exp) = libm::frexp(big);
+        Some(coef.map(|v| libm::scalbn(v, -exp)))
     }
 
     /// F(x) in double-word f64 arithmetic, as one fraction (see [`hable`]).
@@ -391,7 +461,7 @@ impl HableParams {
 /// Hable's filmic curve ("Uncharted 2"; Hable 2010, "Filmic Tonemapping Operators") per
 /// channel: F(bias c) / F(W), clamped to [0, 1], with
 /// F(x) = (x (A x + C B) + D E) / (x (A x + B) + D F) - E / F. F(0) = 0. Parameters outside
-/// [`HableParams::new`]'s domain (a struct built by hand) give NaN.
+/// [`HableParams::new`]'s domain (a struct built by hand; F(W) <= 0 among them) give NaN.
 ///
 /// F's two terms cancel for small x (F(x) is about x B (F C - E) / (D F^2) there, while
 /// each term is about E / F); over one denominator the cancellation is exact:
@@ -406,38 +476,35 @@ impl HableParams {
 #[inline]
 #[must_use]
 pub fn hable<T: Real>(c: T, p: &HableParams) -> T {
-    if !p.is_valid() {
-        return T::splat(f64::NAN);
-    }
     // F(b x) / K = x (P b^2 x + Q b) / (K (R b^2 x^2 + S b x + T)); on f32 lanes plain f64
     // coefficients are exact enough (their few f64 roundings are far below an f32 ulp).
-    let [np, nq, dr, ds, dt] = if single::<T>() {
-        let (a, b, c, d, e, f) = (p.a, p.b, p.c, p.d, p.e, p.f);
-        let (cp, cq, cr, cs, ct) = ((f - e) * a, b * (f * c - e), f * a, f * b, d * f * f);
-        let w = p.white;
-        let k = w * (cp * w + cq) / ((cr * w + cs) * w + ct);
-        let bias = p.exposure_bias;
-        let b2 = bias * bias;
-        [cp * b2, cq * bias, cr * b2 * k, cs * bias * k, ct * k].map(T::splat)
+    let folded = if p.is_valid() {
+        p.folded(single::<T>())
     } else {
-        let k = p.curve_dw(Dw::exact(p.white));
-        let bias = Dw::exact(p.exposure_bias);
-        let [cp, cq, cr, cs, ct] = p.coefficients();
-        let b2 = bias.sq();
-        [
-            cp.mul(b2),
-            cq.mul(bias),
-            cr.mul(b2).mul(k),
-            cs.mul(bias).mul(k),
-            ct.mul(k),
-        ]
-        .map(|v| T::splat(v.value()))
+        None
+    };
+    let Some([np, nq, dr, ds, dt]) = folded.map(|k| k.map(T::splat)) else {
+        return T::splat(f64::NAN);
     };
     let x = sanitize(c);
     let num = x * x.mul_add(np, nq);
     let den = x.mul_add(x.mul_add(dr, ds), dt);
-    (num / den).saturate()
+    // The denominator's coefficients are > 0 but can round to 0 on the lane type where they
+    // are tiny beside the numerator's (parameters far from 1): a zero denominator is the
+    // curve's limit, 1 for a positive numerator (num / 0 = inf, saturated) and 0 at x = 0,
+    // where num / den would be 0 / 0. A NaN x still gives NaN (the comparisons fail).
+    let v = T::select(
+        den.simd_gt(T::ZERO),
+        num / den,
+        T::select(num.simd_gt(T::ZERO), T::ONE, T::ZERO),
+    );
+    nan_where(x.is_nan(), v.saturate())
 }
+
+/// The largest contrast [`LottesParams::new`] accepts: x^contrast is the curve's numerator,
+/// and [`super::MAX_INPUT`]^34 = 1e306 is finite in f64 (1e9^34.3 is not), so the numerator never
+/// overflows to meet an infinite denominator (inf / inf = NaN). Lottes' own value is 1.6.
+pub const LOTTES_CONTRAST_MAX: f64 = 34.0;
 
 /// Parameters of Lottes' curve x^a / (x^(a d) b + c) (b and c derived).
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -464,7 +531,15 @@ impl LottesParams {
         Self::derive(1.6, 0.977, 8.0, 0.18, 0.267)
     }
 
-    /// Validated parameters: all finite and > 0, mid_in < hdr_max, mid_out < 1.
+    /// Validated parameters: all finite and > 0, mid_in < hdr_max, mid_out < 1,
+    /// contrast <= [`LOTTES_CONTRAST_MAX`] = 34, and derived b and c finite with c != 0
+    /// (rejected as `shoulder`; then [`lottes`] gives a number in [0, 1] for every input).
+    /// The last fails for parameters whose powers overflow f64 (contrast or shoulder near 0
+    /// or MAX, hdr_max near MAX, subnormal mid points) and for contrast * shoulder so small
+    /// that hdr_max^(a d) and mid_in^(a d) round to the same value. Where the mid point lies
+    /// off what a rising curve through (hdr_max, 1) allows, b <= 0 or c < 0: the curve's
+    /// denominator x^(a d) b + c changes sign (a pole), and the clamped result jumps between
+    /// 0 and 1 there.
     pub fn new(
         contrast: f64,
         shoulder: f64,
@@ -483,10 +558,25 @@ impl LottesParams {
         }
         require::<f64>(mid_in < hdr_max, "mid_in", "below hdr_max")?;
         require::<f64>(mid_out < 1.0, "mid_out", "below 1")?;
-        Ok(Self::derive(contrast, shoulder, hdr_max, mid_in, mid_out))
+        require::<f64>(
+            contrast <= LOTTES_CONTRAST_MAX,
+            "contrast",
+            "at most 34 (MAX_INPUT^contrast finite in f64)",
+        )?;
+        let p = Self::derive(contrast, shoulder, hdr_max, mid_in, mid_out);
+        // b and c fail to be finite where hdr_max^(a d) and mid_in^(a d) round to the same
+        // value (their difference divides) or a power overflows f64; c != 0 keeps
+        // f(0) = 0 / c a zero (c = 0 would be 0 / 0).
+        require::<f64>(
+            p.b.is_finite() && p.c.is_finite() && p.c != 0.0,
+            "shoulder",
+            "with contrast, hdr_max, mid_in and mid_out, derived b and c finite, c != 0",
+        )?;
+        Ok(p)
     }
 
-    /// True when the public fields are in [`LottesParams::new`]'s domain and b, c are finite.
+    /// True when the public fields are in [`LottesParams::new`]'s domain, b and c are finite
+    /// and c != 0.
     fn is_valid(&self) -> bool {
         let pos = |v: f64| v > 0.0 && v.is_finite();
         pos(self.contrast)
@@ -496,8 +586,10 @@ impl LottesParams {
             && pos(self.mid_out)
             && self.mid_in < self.hdr_max
             && self.mid_out < 1.0
+            && self.contrast <= LOTTES_CONTRAST_MAX
             && self.b.is_finite()
             && self.c.is_finite()
+            && self.c != 0.0
     }
 
     /// b and c solve f(mid_in) = mid_out and f(hdr_max) = 1 (Lottes 2016, slide "Generic
@@ -566,7 +658,10 @@ pub fn lottes<T: Real>(c: T, p: &LottesParams) -> T {
     }
     let (a, ad, b, cc) = (p.contrast, p.contrast * p.shoulder, p.b, p.c);
     per_lane_f64(sanitize(c), |x| {
-        let v = libm::pow(x, a) / (libm::pow(x, ad) * b + cc);
+        // x^(a d) overflows for a large a d; b = 0 (a parameter, the same for every lane)
+        // would then make inf * 0 = NaN of a term that is 0.
+        let xb = if b == 0.0 { 0.0 } else { libm::pow(x, ad) * b };
+        let v = libm::pow(x, a) / (xb + cc);
         Real::saturate(v)
     })
 }
@@ -601,7 +696,9 @@ impl UchimuraParams {
 
     /// True when every field is finite, P, a, m and c are > 0, l >= 0, and the linear
     /// section ends below P (S1 = m + a l0 < P with l0 = (P - m) l / a, else the shoulder
-    /// divides by P - S1 <= 0; the names are those of Uchimura 2017).
+    /// divides by P - S1 <= 0; the names are those of Uchimura 2017), with S0, S1 and P - S1
+    /// finite (they overflow only for parameters near the largest f64, such as a linear
+    /// section 1e300 long).
     fn is_valid(&self) -> bool {
         let all_finite = [
             self.max_brightness,
@@ -619,18 +716,53 @@ impl UchimuraParams {
             self.linear_start,
             self.linear_length,
         );
-        let s1 = m + a * ((pm - m) * l / a);
-        all_finite && pm > 0.0 && a > 0.0 && m > 0.0 && l >= 0.0 && self.black > 0.0 && s1 < pm
+        let [s0, s1, _] = self.shoulder();
+        all_finite
+            && pm > 0.0
+            && a > 0.0
+            && m > 0.0
+            && l >= 0.0
+            && self.black > 0.0
+            && s1 < pm
+            && s0.is_finite()
+            && s1.is_finite()
+            && (pm - s1).is_finite()
+    }
+
+    /// The shoulder's constants [S0, S1, C] (Uchimura 2017's notation): l0 = (P - m) l / a,
+    /// S0 = m + l0, S1 = m + a l0, and the exponent's factor C = -(a P / (P - S1)) / P, capped
+    /// at -MAX (it overflows to -inf where P - S1 is tiny beside a; at x = S0 that would give
+    /// -inf * 0 = NaN).
+    fn shoulder(&self) -> [f64; 3] {
+        let (pm, a, m, l) = (
+            self.max_brightness,
+            self.contrast,
+            self.linear_start,
+            self.linear_length,
+        );
+        let l0 = (pm - m) * l / a;
+        let s1 = m + a * l0;
+        let cp = -(a * pm / (pm - s1)) / pm;
+        [m + l0, s1, Real::max(cp, -f64::MAX)]
     }
 }
+
+/// Where [`uchimura`] caps each of its three pieces (toe, linear section, shoulder) before
+/// blending them: far outside the [0, 1] the result is clamped to, and small enough that the
+/// sum of three such pieces stays finite.
+const PIECE_CAP: f64 = 1e300;
 
 /// Uchimura's "GT" curve (Uchimura 2017, "HDR Theory and Practice", CEDEC): a power toe
 /// m (x/m)^c + b, a linear section m + a (x - m), and an exponential shoulder
 /// P - (P - S1) exp(-a P / (P - S1) (x - S0) / P), blended by smoothstep(0, m, x) and a step at
 /// S0 = m + l0, where l0 = (P - m) l / a is the linear section's length in x and
 /// S1 = m + a l0 its end value (the talk's notation). Per channel, clamped to [0, 1].
-/// f(0) = b. Parameters: every field finite, P, a, m, c > 0, l >= 0 and m + a l0 < P (the Gran
-/// Turismo values qualify); others give NaN. Evaluated in f64 on every lane type (its toe
+/// f(0) = b. Parameters: every field finite, P, a, m, c > 0, l >= 0, m + a l0 < P, and S0,
+/// S1 and P - S1 finite in f64 (they overflow only for parameters near the largest f64; the
+/// Gran Turismo values qualify); others give NaN. Finite in-domain parameters give a result
+/// in [0, 1] for every input: each piece is evaluated only where its weight can be nonzero
+/// (the toe at min(x, m), the shoulder's exponent selected to 0 below S0, where exp would
+/// overflow for a S0 / (P - S1) above ~709) and capped at +-1e300 before the blend. Evaluated in f64 on every lane type (its toe
 /// raises x / m to a decimal power), so f32 results are rounded once.
 ///
 /// Peers: the shader transcription in wide use (dmnsgn's `glsl-tone-map`) with the Gran
@@ -642,30 +774,35 @@ pub fn uchimura<T: Real>(c: T, p: &UchimuraParams) -> T {
     if !p.is_valid() {
         return T::splat(f64::NAN);
     }
-    let (pm, a, m, l, cc, b) = (
+    let (pm, a, m, cc, b) = (
         p.max_brightness,
         p.contrast,
         p.linear_start,
-        p.linear_length,
         p.black,
         p.pedestal,
     );
-    let l0 = (pm - m) * l / a;
-    let s0 = m + l0;
-    let s1 = m + a * l0;
-    let cp = -(a * pm / (pm - s1)) / pm;
+    let [s0, s1, cp] = p.shoulder();
+    // A piece beyond +-1e300 lies far outside [0, 1] whatever its weight; capped there, the
+    // three weighted pieces (weights in [-1, 1]) sum without overflow, so no inf - inf.
+    let cap = |v: f64| Real::clamp(v, -PIECE_CAP, PIECE_CAP);
     per_lane_f64(sanitize(c), |x| {
         let t = Real::saturate(x / m);
         // smoothstep(0, m, x); w1 = 1 - w0 - w2 is formed as smooth - w2, which it equals,
         // without the cancellation of 1 - (1 - smooth) for small x.
         let smooth = t * t * (3.0 - 2.0 * t);
         let w0 = 1.0 - smooth;
-        let w2 = if x >= s0 { 1.0 } else { 0.0 };
+        let past_s0 = x >= s0;
+        let w2 = Real::select(past_s0, 1.0, 0.0);
         let w1 = smooth - w2;
-        let toe = m * libm::pow(x / m, cc) + b;
-        let shoulder = pm - (pm - s1) * libm::exp(cp * (x - s0));
+        // The toe's weight w0 is exactly 0 from x = m on (t = 1 there), so the toe is
+        // evaluated at min(x, m): (x / m)^c stays in [0, 1] instead of overflowing for a tiny
+        // m and then giving 0 * inf = NaN. NaN in x propagates (`min` keeps self's NaN).
+        let toe = m * libm::pow(Real::min(x, m) / m, cc) + b;
+        // Likewise the shoulder's weight is 0 below S0, where its exponent is positive and
+        // can overflow exp (a S0 / (P - S1) above ~709): selected to 0 there before exp.
+        let shoulder = pm - (pm - s1) * libm::exp(Real::select(past_s0, cp * (x - s0), 0.0));
         let linear = a * (x - m) + m;
-        Real::saturate(toe * w0 + linear * w1 + shoulder * w2)
+        Real::saturate(cap(toe) * w0 + cap(linear) * w1 + cap(shoulder) * w2)
     })
 }
 
