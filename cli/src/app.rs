@@ -556,32 +556,14 @@ fn eval_rows(
     }
     for line in lines(text) {
         let is_first = std::mem::take(&mut first);
-        let result = match kernel {
-            Some(k) => {
-                if is_first && is_header(&line.fields, o.ty) {
-                    if let Err(e) = check_header(k, line.row, &line.fields, false) {
-                        let _ = writeln!(err, "error: {e}");
-                        return Ok(EXIT_BAD_INPUT);
-                    }
-                    continue;
-                }
-                parse_row(k, line.row, &line.fields, 0, 0, o.ty, o.unchecked).map(|v| (k, v))
+        let result = match read_line(kernel, &line, is_first, false, &mut expected, o, err) {
+            Step::Next => continue,
+            Step::BadRow => {
+                bad += 1;
+                continue;
             }
-            None => {
-                if line.fields[0] == "kernel" {
-                    expected = multi_header(&line, false, err);
-                    if expected.is_none() {
-                        bad += 1;
-                    }
-                    continue;
-                }
-                row_kernel(line.row, line.fields[0])
-                    .and_then(|k| header_agrees(expected, k, line.row).map(|()| k))
-                    .and_then(|k| {
-                        parse_row(k, line.row, &line.fields[1..], 1, 0, o.ty, o.unchecked)
-                            .map(|v| (k, v))
-                    })
-            }
+            Step::BadHeader => return Ok(EXIT_BAD_INPUT),
+            Step::Row(r) => r,
         };
         match result {
             Ok((k, v)) => {
@@ -604,6 +586,75 @@ fn eval_rows(
     }
     out.flush().map_err(|e| io_error(&e))?;
     Ok(finish_bad(bad, err))
+}
+
+/// What one input line of `eval` or `diff` turned out to be.
+enum Step {
+    /// A header, checked and consumed.
+    Next,
+    /// A multi-kernel header that names no kernel (reported; the rows after it fail).
+    BadRow,
+    /// A single-kernel header that does not match the kernel (reported; nothing is read).
+    BadHeader,
+    /// A row: its kernel and values (`with_outputs`: the arguments, then the shader's
+    /// outputs), or the error naming its row and column.
+    Row(RowResult<(&'static Kernel, Vec<f64>)>),
+}
+
+/// Reads one line of `eval` input (`with_outputs` false) or `diff` input (true), for a
+/// given kernel or, without one, with a leading `kernel` column; `expected` carries the
+/// kernel the last multi-kernel header named.
+fn read_line(
+    kernel: Option<&'static Kernel>,
+    line: &Line<'_>,
+    is_first: bool,
+    with_outputs: bool,
+    expected: &mut Option<&'static Kernel>,
+    o: &Opts,
+    err: &mut dyn Write,
+) -> Step {
+    let extra = |k: &Kernel| if with_outputs { k.outputs.len() } else { 0 };
+    match kernel {
+        Some(k) => {
+            if is_first && is_header(&line.fields, o.ty) {
+                if let Err(e) = check_header(k, line.row, &line.fields, with_outputs) {
+                    let _ = writeln!(err, "error: {e}");
+                    return Step::BadHeader;
+                }
+                return Step::Next;
+            }
+            Step::Row(
+                parse_row(k, line.row, &line.fields, 0, extra(k), o.ty, o.unchecked)
+                    .map(|v| (k, v)),
+            )
+        }
+        None => {
+            if line.fields[0] == "kernel" {
+                *expected = multi_header(line, with_outputs, err);
+                return if expected.is_none() {
+                    Step::BadRow
+                } else {
+                    Step::Next
+                };
+            }
+            Step::Row(
+                row_kernel(line.row, line.fields[0])
+                    .and_then(|k| header_agrees(*expected, k, line.row).map(|()| k))
+                    .and_then(|k| {
+                        parse_row(
+                            k,
+                            line.row,
+                            &line.fields[1..],
+                            1,
+                            extra(k),
+                            o.ty,
+                            o.unchecked,
+                        )
+                        .map(|v| (k, v))
+                    }),
+            )
+        }
+    }
 }
 
 /// A header row `kernel,<names>` of the multi-kernel mode: the kernel whose columns it names
@@ -933,49 +984,14 @@ fn diff_rows(
     let mut expected: Option<&'static Kernel> = None;
     for line in lines(text) {
         let is_first = std::mem::take(&mut first);
-        let parsed = match kernel {
-            Some(k) => {
-                if is_first && is_header(&line.fields, o.ty) {
-                    if let Err(e) = check_header(k, line.row, &line.fields, true) {
-                        let _ = writeln!(err, "error: {e}");
-                        return Ok(EXIT_BAD_INPUT);
-                    }
-                    continue;
-                }
-                parse_row(
-                    k,
-                    line.row,
-                    &line.fields,
-                    0,
-                    k.outputs.len(),
-                    o.ty,
-                    o.unchecked,
-                )
-                .map(|v| (k, v))
+        let parsed = match read_line(kernel, &line, is_first, true, &mut expected, o, err) {
+            Step::Next => continue,
+            Step::BadRow => {
+                bad += 1;
+                continue;
             }
-            None => {
-                if line.fields[0] == "kernel" {
-                    expected = multi_header(&line, true, err);
-                    if expected.is_none() {
-                        bad += 1;
-                    }
-                    continue;
-                }
-                row_kernel(line.row, line.fields[0])
-                    .and_then(|k| header_agrees(expected, k, line.row).map(|()| k))
-                    .and_then(|k| {
-                        parse_row(
-                            k,
-                            line.row,
-                            &line.fields[1..],
-                            1,
-                            k.outputs.len(),
-                            o.ty,
-                            o.unchecked,
-                        )
-                        .map(|v| (k, v))
-                    })
-            }
+            Step::BadHeader => return Ok(EXIT_BAD_INPUT),
+            Step::Row(r) => r,
         };
         match parsed {
             Ok((k, v)) => {
