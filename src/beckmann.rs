@@ -24,32 +24,35 @@
 //! rounding by E (up to 700 in f64); D's remaining factors are recovered the same way and
 //! rounded once. Lambda is evaluated in a form without cancellation (see [`lambda`]); where
 //! cos^2 is too small for an exact two-product (a below 1e-8), Lambda is taken from
-//! 1 / a = alpha sin / cos directly. Max error in ULPs of the correctly rounded result,
+//! 1 / a = alpha sin / cos directly. Error in ULPs of the correctly rounded result,
 //! measured by the MPFR oracle (Walter et al. 2007 eq. 25 and Heitz 2014 eqs. 80 and 83 with
 //! erfc, at 256+ bits) on its stiff and random points (cosines from 1 down to subnormals,
 //! alpha from 1e-4 to 1e4, a from 0.1 to 1e6), wherever the result is >= 1e-30 (f32) /
-//! 1e-300 (f64); `cargo test -p brdf-oracle --release --test microfacet -- --nocapture`:
+//! 1e-300 (f64). Each entry is the bound every oracle run holds (`oracle/src/bounds.rs`; the
+//! larger of the default and FMA builds) and, in parentheses, the max found by the deep search
+//! (`docs/accuracy.md`):
 //!
 //! | function | f32 | f64 | f32x8 | f64x4 |
 //! |---|---|---|---|---|
-//! | `d` | 1.14 | 1.23 | 1.27 | 1.23 |
-//! | `Beckmann::d` | 1.24 | 1.25 | 1.24 | 1.30 |
-//! | `lambda` | 1.95 | 1.14 | 1.95 | 1.30 |
-//! | `g1` | 2.01 | 0.87 | 2.01 | 0.87 |
-//! | `Beckmann::lambda` | 2.65 | 1.25 | 2.65 | 1.39 |
-//! | `Beckmann::v_correlated` | 0.95 | 0.85 | 0.95 | 0.85 |
+//! | `d` | 1.7 (1.46) | 1.6 (1.44) | 1.8 (1.61) | 1.9 (1.71) |
+//! | `Beckmann::d` | 1.7 (1.45) | 1.8 (1.57) | 1.8 (1.63) | 2.4 (2.18) |
+//! | `lambda` | 2.5 (2.27) | 2.0 (1.77) | 2.5 (2.27) | 2.3 (2.11) |
+//! | `g1` | 3.3 (3.14) | 2.4 (2.22) | 3.3 (3.14) | 2.4 (2.22) |
+//! | `Beckmann::lambda` | 3.3 (3.06) | 1.9 (1.69) | 3.3 (3.06) | 2.2 (2.03) |
+//! | `Beckmann::v_correlated` | 1.2 (0.99) | 1.2 (0.99) | 1.2 (0.97) | 1.2 (0.99) |
+//!
+//! Ordinary run: `cargo test -p brdf-oracle --release -- --nocapture` (fresh points each run,
+//! seed printed, plus the committed hardest inputs in `oracle/hardest.txt`); deep search:
+//! `BRDF_ORACLE_DEEP=1 BRDF_ORACLE_RECORD=1 cargo test -p brdf-oracle --release --test
+//! accuracy_table -- --nocapture` (10^5 fresh points per function and type plus a longer
+//! climb).
 //!
 //! Lambda's factors P = exp(-a^2) K / (2 sqrt(pi)) and Q = a (a + K) are carried with the
 //! relative correction of every rounding (K's series to twice the working precision in its
 //! last steps, a's own rounding recovered and propagated through K' = 2 (a + K) K - 1), so
-//! exp's error and one final rounding remain. On 100 000 fresh random points per function and
-//! type plus a hill-climb from the worst of them (cosines log-uniform down to the smallest
-//! subnormal, a = 1 / (alpha tan) from 0.05 to 30, alpha over [ALPHA_MIN, ALPHA_MAX];
-//! `FRESH_N=100000 cargo test -p brdf-oracle --release --test fresh_microfacet -- --ignored
-//! --nocapture`) the maxima are 2.25 (f32, f32x8) / 1.64 (f64) / 1.92 (f64x4) for `lambda`,
-//! 2.97 / 2.23 for `g1`, 3.02 / 2.33 for `Beckmann::lambda` and 0.96 / 0.96 for
-//! `Beckmann::v_correlated`; the worst points of `g1` and `Beckmann::lambda` lie where a is
-//! below 1e-8 and Lambda is taken from 1 / a = r / |z|.
+//! exp's error and one final rounding remain (the table's maxima come from the deep search's
+//! 10^5 fresh points per function and type, cosines down to the smallest subnormal, plus its
+//! hill-climb).
 //!
 //! (The lanes' exp is a polynomial within 1 ULP (f32x8) / 2 ULP (f64x4) of the scalar one;
 //! see `crate::real`.)
@@ -506,7 +509,8 @@ impl<T: Real> Microfacet<T> for Beckmann<T> {
 /// carried with the error of each rounding recovered by Dekker's exact products and the
 /// division remainder, D is exp(-E_hi) (1 - E_lo) / (pi alpha^2 c^4) with the denominator's
 /// roundings recovered too, and the whole is rounded once (about 150 extra flops): within
-/// 1.2 ULP, exp's own error included (module docs).
+/// 1.7 ULP (f32) / 1.6 (f64) / 1.8 (f32x8) / 1.9 (f64x4), exp's own error included (module
+/// docs).
 ///
 /// [`alpha_from_perceptual`]: crate::microfacet::alpha_from_perceptual
 #[inline]
@@ -694,7 +698,7 @@ fn sqrt_dw<T: Real>(x: Rel<T>) -> (T, T) {
 ///
 /// Domain: as [`a_of`] (alpha the RMS slope, not perceptual roughness). Edges: the pole at
 /// n_dot_v = 0 is capped at the largest finite value (G1 = 1 / (1 + MAX) = 0 exactly), 0 at
-/// |n_dot_v| = 1. Within 2.3 ULP (f32, f32x8) / 1.9 ULP (f64, f64x4) on fresh points, module
+/// |n_dot_v| = 1. Within 2.5 ULP (f32, f32x8) / 2.0 ULP (f64) / 2.3 ULP (f64x4), module
 /// docs.
 #[inline]
 #[must_use]
@@ -705,8 +709,8 @@ pub fn lambda<T: Real>(n_dot_v: T, alpha: T) -> T {
 /// Smith G1 = 1 / (1 + [`lambda`]) of the isotropic Beckmann distribution, evaluated as
 /// a (a + K) / (a (a + K) + P) in the notation of [`lambda`] (one rounding fewer). Same
 /// domain (alpha the RMS slope, as in [`d`]); 0 at n_dot_v = 0, 1 at |n_dot_v| = 1; NaN for
-/// NaN input or alpha < 0 or +inf. Within 3.0 ULP (f32, f32x8) / 2.3 ULP (f64, f64x4) on fresh
-/// points, module docs.
+/// NaN input or alpha < 0 or +inf. Within 3.3 ULP (f32, f32x8) / 2.4 ULP (f64, f64x4), module
+/// docs.
 #[inline]
 #[must_use]
 pub fn g1<T: Real>(n_dot_v: T, alpha: T) -> T {

@@ -59,7 +59,8 @@ pub fn mul<T: Real>(m: &Mat3, c: V3<T>) -> V3<T> {
 /// base. Against the standard's formula in 300-bit arithmetic (mpmath; 2,300 points per type:
 /// uniform on [0, 1] and [0, 0.05], log-uniform down to 1e-26, 40 neighbours of each
 /// breakpoint, 0, subnormals, 1, 2, 100): within 1 ulp in f32 and f32x8 (every point
-/// correctly rounded or 1 ulp off), 3.4 ulps in f64 and f64x4. OETF(EOTF(x)) is within 1 ulp
+/// correctly rounded or 1 ulp off), and within 2.8 ulps in f64 and f64x4 (the MPFR oracle's
+/// deep search over 10^5 fresh points and a hill-climb: max 2.57). OETF(EOTF(x)) is within 1 ulp
 /// of x in f32 and 2 in f64 over [0, 1] outside the seam's interval (0.040449936, 0.04045],
 /// and every 8- and 16-bit code round-trips exactly (`cargo test --test color_transfer -- --nocapture`).
 /// [`srgb_oetf_fast`] is the plain single-`pow` form in the input's own precision.
@@ -76,8 +77,11 @@ pub fn srgb_oetf<T: Real>(x: T) -> T {
 /// [`srgb_oetf`] in the input's own precision without the refinement: one `pow`, the same
 /// pieces and threshold (compared in the input's precision: the f32 nearest 0.0031308 lies
 /// 9e-11 above it, so that one f32 input takes the linear piece here and the power piece in
-/// [`srgb_oetf`]). Within 5 ulps of the standard in f32 and f64 (the rounding of the
-/// exponent 1/2.4 and of 1.055 x^(1/2.4) - 0.055). Negative input gives 0, NaN gives NaN.
+/// [`srgb_oetf`]). Within 5 ulps of the standard on [0, 1] in f32 and f64 (the rounding of
+/// the exponent 1/2.4 and of 1.055 x^(1/2.4) - 0.055; f32: 3.08 ulps over every input,
+/// `oracle/tests/exhaustive_f32.rs`). Above 1 the exponent's rounding is multiplied by ln x:
+/// up to 16.6 ulps in f32 (at 1.7e38, same sweep; about 3.5 at 1e9) and, by the same
+/// estimate, about 120 in f64 near its largest value. Negative input gives 0, NaN gives NaN.
 #[inline]
 #[must_use]
 pub fn srgb_oetf_fast<T: Real>(x: T) -> T {
@@ -105,9 +109,11 @@ pub const SRGB_EOTF_BREAK: f64 = 0.040_45;
 ///
 /// Evaluated per lane in f64 with the base (x + 0.055) / 1.055 carried as two words (its
 /// rounding would otherwise cost up to 2.4 ulps: the base lies in a binade up to twice as
-/// coarse as x) and folded back into the power to first order. Against the standard's
-/// formula in 300-bit arithmetic (mpmath, the points of [`srgb_oetf`]): within 1 ulp in f32
-/// and f32x8, 3.8 ulps in f64 and f64x4 (libm's `pow`).
+/// coarse as x) and folded back into the power to first order, with the rounding of the
+/// exponent 2.4 in f64 (a factor b^(2.4 - fl(2.4)), up to 1.9 ulps near the breakpoint).
+/// Against the standard's formula in 300-bit arithmetic (mpmath, the points of
+/// [`srgb_oetf`]): within 1 ulp in f32 and f32x8; within 2.5 ulps in f64 and f64x4 (the MPFR
+/// oracle's deep search: max 2.27; libm's `pow`).
 ///
 /// Domain: every value. Negative input is clamped to 0, NaN gives NaN; above 1 the curve
 /// continues, and results beyond the type's range (f32 inputs above about 1e16, f64 above
@@ -142,9 +148,15 @@ fn srgb_eotf_pow_f64(x: f64) -> f64 {
     let rem = libm::fma(-b, 1.055, s) + s_err;
     let b_lo = rem / 1.055;
     let p = libm::pow(b, 2.4);
-    // (b + b_lo)^2.4 = b^2.4 (1 + 2.4 b_lo / b) to first order; b_lo / b < 2^-52.
-    p + p * (2.4 * b_lo / b)
+    // (b + b_lo)^2.4 = b^2.4 (1 + 2.4 b_lo / b) to first order; b_lo / b < 2^-52. The f64
+    // exponent is 2.4 - EXPONENT_2_4_TAIL: the power it gives is off by the factor
+    // b^tail = 1 + tail ln b (up to 1.9 ulps near the breakpoint, where ln b = -2.3), restored
+    // to first order too.
+    p + p * (2.4 * b_lo / b + EXPONENT_2_4_TAIL * libm::log(b))
 }
+
+/// 12/5 - fl(2.4): the rounding of the EOTF's exponent in f64.
+const EXPONENT_2_4_TAIL: f64 = 8.881_784_197_001_253e-17;
 
 fn srgb_eotf_f64(x: f64) -> f64 {
     if x <= SRGB_EOTF_BREAK {
@@ -179,9 +191,9 @@ pub const REC709_BREAK: f64 = 0.018;
 /// f64, so the f32 nearest 0.018 (7.7e-10 below it) takes the linear piece, 4.5 L = 0.081,
 /// and the f64 nearest 0.018 (also below) too. The pieces do not meet: at 0.018 the power
 /// piece gives 0.0812479, 2.5e-4 above 4.5 * 0.018 = 0.081 (BT.709's rounded constants), so
-/// the curve steps up there. Against the formula in 300-bit arithmetic (mpmath, the points
-/// of [`srgb_oetf`]): within 1 ulp in f32 and f32x8, 3.1 in f64 and f64x4 (the
-/// 1.099 L^0.45 - 0.099 subtraction loses up to 1.2 bits near the breakpoint).
+/// the curve steps up there. Against the formula evaluated in MPFR (the oracle's deep search,
+/// `docs/accuracy.md`): within 0.7 ulp in f32 and f32x8, 3.7 ulps in f64 and f64x4, max 3.48
+/// found (the 1.099 L^0.45 - 0.099 subtraction loses up to 1.2 bits near the breakpoint).
 ///
 /// Domain: every value. Negative input is clamped to 0, NaN gives NaN; above 1 the power
 /// curve continues; +inf gives +inf.

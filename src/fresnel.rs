@@ -16,32 +16,35 @@
 //! # Accuracy
 //! Measured by the workspace's correctly rounded oracle (MPFR at 256 bits and more, from the
 //! textbook ratio definitions), in ULPs of the correctly rounded result where it is >= 1e-30
-//! (f32) / 1e-300 (f64); lanes equal scalar bit for bit. On the oracle's stiff and random
-//! points (`cargo test -p brdf-oracle --release --test fresnel -- --nocapture`), and on
-//! 100 000 fresh random points per function and type over the whole domain (eta and k
-//! log-uniform from the smallest subnormal to MAX, both sides of every internal switch) plus a
-//! hill-climb from the worst of them
-//! (`FRESH_POINTS=100000 cargo test -p brdf-oracle --release --test fresh_fresnel -- --nocapture`):
+//! (f32) / 1e-300 (f64); lanes equal scalar bit for bit. Every ordinary run
+//! (`cargo test -p brdf-oracle --release -- --nocapture`: fresh points over the whole domain,
+//! seed printed, plus the committed hardest inputs in `oracle/hardest.txt`) holds each
+//! function within the bound below (`oracle/src/bounds.rs`; the larger of the default and FMA
+//! builds); in parentheses, the max found by the deep search (`docs/accuracy.md`: 10^5 fresh
+//! points per function and type, eta and k log-uniform from the smallest subnormal to MAX,
+//! both sides of every internal switch, plus a longer hill-climb;
+//! `BRDF_ORACLE_DEEP=1 BRDF_ORACLE_RECORD=1 cargo test -p brdf-oracle --release --test
+//! accuracy_table -- --nocapture`):
 //!
-//! | function | f32 | f64 | f32x8 | f64x4 | fresh f32 | fresh f64 |
-//! |---|---|---|---|---|---|---|
-//! | `dielectric` | 0.98 | 1.05 | 0.98 | 1.05 | 1.24 | 1.24 |
-//! | `dielectric_polarized` Rs | 0.50 | 0.50 | 0.50 | 0.50 | 0.50 | 0.50 |
-//! | `dielectric_polarized` Rp | 0.50 | 0.50 | 0.50 | 0.50 | 1.00 | 0.50 |
-//! | `conductor` | 2.12 | 2.07 | 2.12 | 2.07 | 3.04 | 2.69 |
-//! | `schlick` | 1.59 | 1.64 | 1.59 | 1.64 | | |
-//! | `f0_from_ior` | 0.50 | 0.50 | 0.50 | 0.50 | 0.50 | 0.50 |
+//! | function | f32, f32x8 | f64, f64x4 |
+//! |---|---|---|
+//! | `dielectric` | 1.4 (1.24) | 1.4 (1.23) |
+//! | `dielectric_polarized` Rs | 0.7 (0.50) | 0.7 (0.50) |
+//! | `dielectric_polarized` Rp | 0.7 (0.50) | 0.7 (0.50) |
+//! | `conductor` | 3.5 (3.30) | 3.9 (3.69) |
+//! | `schlick` | 3.2 (3.05) | 3.5 (3.25) |
+//! | `f0_from_ior` | 0.7 (0.50) | 0.7 (0.50) |
 //!
 //! The dielectric forms carry eta^2, c^2, g, the two denominators, the amplitude ratios
 //! r_perp and r_par themselves and their squares in double words (Dekker products and Knuth
 //! sums, without FMA, so every target and lane type rounds alike), so that Rs = r_perp^2 and
 //! Rp = r_par^2 are rounded once; F = (Rs + Rp) / 2 adds one more rounding.
-//! Where a 1-ulp change of the cosine moves the exact result by more than 8 ulps (within
-//! about 2^-12 of the critical cosine, where dF/dcos is infinite, and at Rp's double zero at
-//! Brewster's angle) the oracle scores the error in units of that change instead: there every
-//! result is within 0.07 (F, f32) / 0.09 (F, f64), 0.05 (Rs), 0.06 (Rp) and 0.18 (conductor)
-//! of it on the oracle's points and within 0.24 on the fresh ones, i.e. far closer than one
-//! rounding of the cosine would take the exact value. Points with eta within a few ulps of 1
+//! Where a 1-ulp change of the cosine moves the exact result by more than 8 ulps (kappa > 8:
+//! within about 2^-12 of the critical cosine, where dF/dcos is infinite, and at Rp's double
+//! zero at Brewster's angle) the oracle scores raw - kappa / 2, the raw error less what one
+//! rounding of the cosine explains; there the raw error stays below what that rounding
+//! explains: raw <= kappa / 2 + B with B = -2.7 (F, f32) / -2.6 (F, f64), -3.3 (Rs, Rp) and -1.3 (conductor, f32) / -1.0
+//! (conductor, f64) (`docs/accuracy.md`). Points with eta within a few ulps of 1
 //! count as well conditioned (eta - 1 is exact) and are in the table above.
 //! The conductor carries N^2 - 1, s^2 = N^2 - sin^2, s (one Newton step), the squared
 //! moduli |N^2 - 1|^2 and |c + s|^2 and their quotient |r_perp|^2 in double words as well,
@@ -70,10 +73,10 @@ const CONDUCTOR_SCALE_HI: f64 = 65536.0;
 
 /// Normal-incidence reflectance of a dielectric: F0 = ((eta - 1) / (eta + 1))^2 (Fresnel's
 /// equations at theta = 0; the "F0 from IOR" of real-time engines). Domain eta in (0, MAX]:
-/// F0(1) = 0, F0 -> 1 as eta -> 0 or MAX; eta <= 0, +inf and NaN give NaN. Within 0.5 ulp
-/// plus a few 2^-p of the correctly rounded value (one rounding of a double-word result; max
-/// 0.50 ulp in f32 and f64 on the oracle's points and on 100 000 fresh ones over (0, MAX],
-/// module docs, "Accuracy"; the plain quotient and square reached 4.5 ulps). Cost: about 80
+/// F0(1) = 0, F0 -> 1 as eta -> 0 or MAX; eta <= 0, +inf and NaN give NaN. Within 0.7 ulp
+/// of the correctly rounded value (one rounding of a double-word result; max 0.50 ulp on every
+/// lane type over (0, MAX] in the oracle's deep search, module docs, "Accuracy"; the plain
+/// quotient and square reached 4.5 ulps). Cost: about 80
 /// flops and two divisions, against 3 flops and one division for the plain form (25 ns
 /// against 2 ns per f64 call on x86-64 without FMA): a per-material, not per-sample, cost.
 #[inline]
@@ -108,8 +111,9 @@ pub fn ior_from_f0<T: Real>(f0: T) -> T {
 /// near c = 0.1 (`cargo test --test fresnel_approximations -- --nocapture`).
 ///
 /// Domain: F0 in [0, 1] (outside, and NaN, give NaN); the cosine is clamped to [0, 1] (a
-/// negative one counts as grazing: 1), NaN gives NaN. Within 1.6 ulps of the correctly
-/// rounded formula in f32 and f64 (module docs, "Accuracy"): the rounding error of 1 - c is
+/// negative one counts as grazing: 1), NaN gives NaN. Within 3.2 ulps (f32) / 3.5 ulps (f64)
+/// of the correctly rounded formula, lanes the same (max 3.05 / 3.25 found; module docs,
+/// "Accuracy"): the rounding error of 1 - c is
 /// recovered and added back to first order (5 flops), instead of being raised to the 5th
 /// power.
 #[inline]
@@ -120,7 +124,7 @@ pub fn schlick<T: Real>(f0: T, v_dot_h: T) -> T {
 
 /// (1 - c)^5 for c clamped to [0, 1], with the rounding error e of y = 1 - c (exact by
 /// Fast2Sum, since 1 >= c) restored to first order: y^5 + 5 y^4 e. Without it the rounding of
-/// 1 - c (for c < 1/2) is multiplied by 5 (4.5 ulps in Schlick's F instead of 1.6).
+/// 1 - c (for c < 1/2) is multiplied by 5 (4.5 ulps in Schlick's F).
 #[inline]
 fn one_minus_pow5<T: Real>(cos_theta: T) -> T {
     let c = cos_theta.saturate();
@@ -210,10 +214,11 @@ pub fn schlick_sg<T: Real>(f0: T, v_dot_h: T) -> T {
 /// exactly (1, 1) for eta != 1; c = 1 gives ((eta - 1) / (eta + 1))^2 for both. NaN in either
 /// input, eta <= 0 and eta = +inf give NaN.
 ///
-/// Accuracy (module docs, "Accuracy"): Rs within 0.50 ulp and Rp within 1.0 ulp of the
-/// correctly rounded value (f32 and f64, max over the oracle's points and 100 000 fresh ones
-/// over the whole domain) where a 1-ulp change of the cosine moves them by at most 8 ulps;
-/// elsewhere (critical and Brewster's angles) within 0.13 of that change. Cost: both paths
+/// Accuracy (module docs, "Accuracy"): Rs and Rp within 0.7 ulp of the correctly rounded
+/// value (every lane type; max 0.50 found by the oracle's deep search over the whole domain)
+/// where a 1-ulp change of the cosine moves them by at most 8 ulps; elsewhere (critical and
+/// Brewster's angles) the raw error stays below what one rounding of the cosine explains
+/// (raw <= kappa / 2 - 3.3). Cost: both paths
 /// run on every lane (no branch on a lane value; they share the root, the quotients and the
 /// squares), about 550 flops and seven divisions: 1.9 times the time (scalar) and 2.1 times
 /// (f32x8, f64x4) of the previous form, working-precision ratios over double-word
@@ -354,10 +359,11 @@ fn extreme_terms<T: Real>(inside: T::Mask, c: T, eta: T) -> (Dw<T>, Dw<T>, Dw<T>
 /// Exact unpolarized Fresnel reflectance of a dielectric, F = (Rs + Rp) / 2 from
 /// [`dielectric_polarized`] (same conventions and domain: a negative cosine means light from
 /// the other side, relative index 1 / eta; total internal reflection gives 1; eta = 1 gives
-/// 0; NaN and eta outside (0, MAX] give NaN). Within 1.24 ulps of the correctly rounded
-/// value (f32 and f64, max over the oracle's points and 100 000 fresh ones over the whole
-/// domain) where a 1-ulp change of the cosine moves F by at most 8 ulps, and within 0.13 of
-/// that change near the critical cosine (module docs, "Accuracy").
+/// 0; NaN and eta outside (0, MAX] give NaN). Within 1.4 ulps of the correctly rounded
+/// value (every lane type; max 1.24 found by the oracle's deep search over the whole domain)
+/// where a 1-ulp change of the cosine moves F by at most 8 ulps; near the critical cosine the
+/// raw error stays below what one rounding of the cosine explains (raw <= kappa / 2 - 2.7 in
+/// f32, kappa / 2 - 2.6 in f64; module docs, "Accuracy").
 #[inline]
 #[must_use]
 pub fn dielectric<T: Real>(cos_theta_i: T, eta: T) -> T {
@@ -401,11 +407,12 @@ pub fn dielectric<T: Real>(cos_theta_i: T, eta: T) -> T {
 /// c = 0 gives 1; eta = 1, k = 0 gives 0. NaN in any input, eta <= 0, k < 0 and infinite
 /// eta or k give NaN.
 ///
-/// Accuracy (module docs, "Accuracy"): within 3.1 ulps (f32) / 2.7 ulps (f64) of the
-/// correctly rounded value where a 1-ulp change of the cosine moves it by at most 8 ulps (max
-/// over the oracle's points and 100 000 fresh ones over the whole domain, a quarter of them
-/// metals with eta in [0.05, 3], k in [1, 8]); elsewhere (k near 0 at the critical angle)
-/// within 0.24 of that change. Cost: about 420 flops, 290 more than the same ratios in working
+/// Accuracy (module docs, "Accuracy"): within 3.5 ulps (f32, f32x8) / 3.9 ulps (f64, f64x4)
+/// of the correctly rounded value where a 1-ulp change of the cosine moves it by at most 8
+/// ulps (max 3.30 / 3.69 found by the oracle's deep search over the whole domain; 3.00 / 3.10
+/// with FMA); elsewhere (k near 0 at the critical angle) the raw error stays below what one
+/// rounding of the cosine explains (raw <= kappa / 2 - 1.3 in f32, kappa / 2 - 1.0 in f64).
+/// Cost: about 420 flops, 290 more than the same ratios in working
 /// precision (fifteen Dekker squares or products, a dozen double-word sums, one double-word
 /// quotient).
 #[inline]

@@ -46,10 +46,12 @@
 //! | `Ggx::g2_separable` | 0.50 | 0.50 | 0.50 | 0.50 |
 //! | `Ggx::v_correlated` | 0.50 | 0.50 | 0.50 | 0.50 |
 //!
-//! The same figures (max 0.50 on every lane type) hold on 100 000 fresh random points per
-//! function and type plus a hill-climb from the worst of them
-//! (`FRESH_N=100000 cargo test -p brdf-oracle --release --test fresh_microfacet -- --ignored
-//! --nocapture`).
+//! These are the deep search's maxima (`docs/accuracy.md`: 10^5 fresh random points per
+//! function and type plus a longer hill-climb from the worst of them,
+//! `BRDF_ORACLE_DEEP=1 BRDF_ORACLE_RECORD=1 cargo test -p brdf-oracle --release --test
+//! accuracy_table -- --nocapture`); every ordinary run (`cargo test -p brdf-oracle --release
+//! -- --nocapture`: fresh points, seed printed, and the committed hardest inputs in
+//! `oracle/hardest.txt`) holds each function within 0.7 ULP on every lane type.
 //!
 //! D squares its denominator t = sin^2 + cos^2 alpha^2, so a plain evaluation counts t's
 //! rounding twice (5.6 ULP); it is carried to twice the working precision instead (Dekker's

@@ -609,3 +609,16 @@ proptest! {
         }
     }
 }
+
+/// Schlick's G1 and V at a huge k (up to the largest finite value) on the normal: 1 and 1/4,
+/// not the NaN of inf / inf that k (1 - c) + c would give unguarded.
+#[test]
+fn schlick_smith_at_huge_k_on_the_normal() {
+    for k in [1e8f32, 3e38, f32::MAX] {
+        assert_eq!(ggx::g1_schlick(1.0f32, k), 1.0, "k = {k:e}");
+    }
+    for k in [1e300, f64::MAX] {
+        assert_eq!(ggx::g1_schlick(1.0f64, k), 1.0, "k = {k:e}");
+        assert_eq!(ggx::v_schlick(1.0f64, 1.0, k), 0.25, "k = {k:e}");
+    }
+}

@@ -55,10 +55,25 @@ fn alpha_pairs() -> Vec<[f64; 2]> {
     ]
 }
 
-/// (cos, alpha) on the stiff grid and at random.
+/// (cos, alpha) on the stiff grid and at random: the cosine from [`Rng::cosine`], over its
+/// whole range down to the smallest subnormal ([`points::cosine_full`], 0 excluded), or in
+/// the band where Beckmann's a = 1 / (alpha tan(theta)) is 0.05 .. 30 (where its Lambda
+/// changes form).
 fn cos_alpha(ty: Ty) -> Vec<Vec<f64>> {
     let mut v = grid(&[cosines(ty), alphas()]);
-    v.extend(random("cos_alpha", |g| vec![g.cosine(), g.alpha()]));
+    v.extend(random("cos_alpha", |g| {
+        let alpha = g.alpha();
+        let c = match (g.uniform() * 3.0) as u32 {
+            0 => g.cosine(),
+            1 => points::cosine_full(g, ty),
+            _ => {
+                let t = 1.0 / (alpha * g.log_range(0.05, 30.0));
+                1.0 / t.hypot(1.0)
+            }
+        };
+        let tiny = points::full_range(ty).0;
+        vec![c.max(tiny), alpha]
+    }));
     v
 }
 
@@ -123,8 +138,13 @@ fn two_dirs_alphas(ty: Ty) -> Vec<Vec<f64>> {
     v
 }
 
-/// A relative index: near 1 on either side, or log-uniform in [0.2, 10].
-fn random_eta(g: &mut Rng) -> f64 {
+/// A relative index: half the time over the whole documented domain (0, MAX] of `ty`
+/// ([`points::eta_full`], both sides of every internal switch), otherwise near 1 on either
+/// side or log-uniform in [0.2, 10].
+fn random_eta(g: &mut Rng, ty: Ty) -> f64 {
+    if g.uniform() < 0.5 {
+        return points::eta_full(g, ty);
+    }
     match (g.uniform() * 3.0) as u32 {
         0 => 1.0 + g.log_range(1e-8, 0.1),
         1 => 1.0 - g.log_range(1e-8, 0.1),
@@ -132,8 +152,8 @@ fn random_eta(g: &mut Rng) -> f64 {
     }
 }
 
-/// (cos_i, eta), cos_i of both signs: the stiff grid, random points (eta near 1 on either
-/// side or log-uniform in [0.2, 10]), and the neighbourhood of the critical angle from outside
+/// (cos_i, eta), cos_i of both signs: the stiff grid, random points ([`random_eta`], the
+/// cosine over its whole range half the time), and the neighbourhood of the critical angle from outside
 /// (eta < 1) and inside (eta > 1): the critical cosine and its 3 neighbouring floats each
 /// side, and random relative offsets up to 2^-12. Split by conditioning per function
 /// ([`conditioned`]).
@@ -141,9 +161,13 @@ fn cos_eta(ty: Ty) -> Vec<Vec<f64>> {
     let signed: Vec<f64> = cosines(ty).into_iter().flat_map(|c| [c, -c]).collect();
     let mut v = grid(&[signed, etas(ty)]);
     v.extend(random("cos_eta", |g| {
-        let c = g.cosine();
+        let c = if g.uniform() < 0.5 {
+            g.cosine()
+        } else {
+            points::cosine_full(g, ty)
+        };
         let c = if g.uniform() < 0.5 { -c } else { c };
-        vec![c, random_eta(g)]
+        vec![c, random_eta(g, ty)]
     }));
     let crit = |e: f64| ((1.0 - e) * (1.0 + e)).sqrt();
     for eta in [0.5_f64, 1.0 / 1.5, 1.0 - 1e-3, 1.0 - 1e-6] {
@@ -226,7 +250,9 @@ fn conductor_ill(ty: Ty) -> Vec<Vec<f64>> {
     conditioned(ty, cos_eta_k, ref_conductor, true)
 }
 
-/// (cos_i, eta, k): moderate eta and k on a grid and at random, and large ones on a grid.
+/// (cos_i, eta, k): moderate eta and k on a grid and at random, large ones on a grid, and
+/// half the random points over the whole documented domain (eta in (0, MAX], k in [0, MAX],
+/// both sides of the scaling thresholds 2^16 and EPSILON^2, [`points::k_full`]).
 fn cos_eta_k(ty: Ty) -> Vec<Vec<f64>> {
     let eta = vec![0.2, 0.5, 1.0 - 1e-6, 1.0, 1.0 + 1e-6, 1.5, 10.0];
     let k = vec![0.0, 1e-3, 1.0, 3.0, 1e3];
@@ -238,6 +264,14 @@ fn cos_eta_k(ty: Ty) -> Vec<Vec<f64>> {
         vec![0.0, 7e4, 1e10],
     ]));
     v.extend(random("cos_eta_k", |g| {
+        if g.uniform() < 0.5 {
+            let e = match (g.uniform() * 10.0) as u32 {
+                0 => points::near(g, ty, 65536.0),
+                1 => points::near(g, ty, points::eps2(ty)),
+                _ => points::eta_full(g, ty),
+            };
+            return vec![points::cosine_full(g, ty), e, points::k_full(g, ty)];
+        }
         let k = if g.uniform() < 0.2 {
             0.0
         } else {
@@ -259,7 +293,7 @@ fn f0_cos(ty: Ty) -> Vec<Vec<f64>> {
 fn eta_only(ty: Ty) -> Vec<Vec<f64>> {
     let mut v: Vec<Vec<f64>> = etas(ty).into_iter().map(|e| vec![e]).collect();
     v.push(vec![1.0]);
-    v.extend(random("eta_only", |g| vec![random_eta(g)]));
+    v.extend(random("eta_only", |g| vec![random_eta(g, ty)]));
     v
 }
 
@@ -311,7 +345,36 @@ fn oren_nayar_full_points(ty: Ty) -> Vec<Vec<f64>> {
 }
 
 fn ref_oren_nayar_full(x: &[Float]) -> Float {
-    r::oren_nayar_full(&x[0], &x[1], &x[2], &x[3], &x[4])
+    realizable(x, r::oren_nayar_full)
+}
+
+/// Whether (n.v, n.l, v.l) is a triple some pair of unit vectors has, up to rounding:
+/// (v.l - n.v n.l)^2 <= (1 - n.v^2)(1 - n.l^2)(1 + 2^-10), i.e. |cos(phi)| <= 1 + 2^-11,
+/// decided exactly (products of f64 values are exact at 256 bits). [`direction_pairs`]
+/// keeps its points to it. The slack keeps a cosine's neighbouring floats inside where a
+/// triple sits on the boundary (directions opposite in azimuth), so its condition number can
+/// be measured; the references and the kernels both extend the lobes there by the same
+/// formula in s = v.l - n.v n.l.
+fn is_realizable(cv: f64, cl: f64, vl: f64) -> bool {
+    let f = |v: f64| Float::with_val(256, v);
+    let (cv, cl, vl) = (f(cv), f(cl), f(vl));
+    let s = Float::with_val(256, &vl - Float::with_val(256, &cv * &cl));
+    let lhs = Float::with_val(256, s.square_ref());
+    let a = Float::with_val(256, 1 - Float::with_val(256, cv.square_ref()));
+    let b = Float::with_val(256, 1 - Float::with_val(256, cl.square_ref()));
+    let slack = Float::with_val(256, 1) + Float::with_val(256, -10).exp2();
+    lhs <= Float::with_val(256, &a * &b) * slack
+}
+
+/// `f` at (n.v, n.l, v.l, rho, sigma) where the triple is realizable ([`is_realizable`]),
+/// NaN elsewhere: the hill-climb of the harness skips points whose reference is NaN, so it
+/// cannot wander onto direction triples no pair of unit vectors has.
+fn realizable(x: &[Float], f: fn(&Float, &Float, &Float, &Float, &Float) -> Float) -> Float {
+    if is_realizable(x[0].to_f64(), x[1].to_f64(), x[2].to_f64()) {
+        f(&x[0], &x[1], &x[2], &x[3], &x[4])
+    } else {
+        Float::with_val(x[0].prec(), rug::float::Special::Nan)
+    }
 }
 
 /// Oren-Nayar full, split by conditioning in n.v ([`conditioned`]): both directions near
@@ -356,13 +419,35 @@ fn direction_pairs(ty: Ty, name: &str, sigmas: &[f64], sigma_hi: f64) -> Vec<Vec
     v.retain(|p| ty.round(p[0]).max(ty.round(p[1])) >= tiny);
     // Rounding the directions' cosines to f32 can leave a triple no pair of unit vectors has
     // (n.l rounded to 1 while v.l != n.v): cos(phi) = (v.l - n.v n.l) / (sin_v sin_l) is then
-    // undefined or far outside [-1, 1]. Keep realizable triples (up to rounding).
-    v.retain(|p| {
-        let [cv, cl, vl] = [0, 1, 2].map(|i| ty.round(p[i]));
-        let s = vl - cv * cl;
-        s * s <= (1.0 - cv * cv) * (1.0 - cl * cl) * (1.0 + 2f64.powi(-10))
-    });
-    v
+    // undefined or far outside [-1, 1]. Such a triple is replaced by the nearest realizable
+    // one with the same rounded cosines (v.l moved into its feasible interval), so near-normal
+    // inputs keep their share of the points instead of being dropped.
+    let realizable = is_realizable;
+    v.into_iter()
+        .filter_map(|mut p| {
+            let [cv, cl, vl] = [0, 1, 2].map(|i| ty.round(p[i]));
+            if realizable(cv, cl, vl) {
+                return Some(p);
+            }
+            let half = ((1.0 - cv * cv) * (1.0 - cl * cl)).max(0.0).sqrt();
+            let centre = cv * cl;
+            // The clamped value, then up to 4 floats further toward the centre, then the
+            // centre itself (rounded).
+            let mut x = ty.round(vl.clamp(centre - half, centre + half));
+            let mut tries = vec![x];
+            for _ in 0..4 {
+                x = if x > centre {
+                    ty.next_down(x)
+                } else {
+                    ty.next_up(x)
+                };
+                tries.push(x);
+            }
+            tries.push(ty.round(centre));
+            p[2] = tries.into_iter().find(|&x| realizable(cv, cl, x))?;
+            Some(p)
+        })
+        .collect()
 }
 
 /// (cos_v, cos_l, l.h, rho, roughness).
@@ -721,7 +806,7 @@ pub fn all() -> Vec<Case> {
             name: "diffuse::oren_nayar",
             family: Lobes,
             source: "Oren and Nayar 1994 eq. 30",
-            reference: |x| r::oren_nayar(&x[0], &x[1], &x[2], &x[3], &x[4]),
+            reference: |x| realizable(x, r::oren_nayar),
             kernels: kernel!(|x| diffuse::oren_nayar(x[0], x[1], x[2], x[3], x[4])),
             points: oren_nayar_points,
             perturbed: harness::FIRST,
@@ -766,7 +851,7 @@ pub fn all() -> Vec<Case> {
             name: "diffuse::oren_nayar_fujii",
             family: Lobes,
             source: "Fujii 2012",
-            reference: |x| r::oren_nayar_fujii(&x[0], &x[1], &x[2], &x[3], &x[4]),
+            reference: |x| realizable(x, r::oren_nayar_fujii),
             kernels: kernel!(|x| diffuse::oren_nayar_fujii(x[0], x[1], x[2], x[3], x[4])),
             points: fujii_points,
             perturbed: harness::FIRST,
@@ -775,7 +860,7 @@ pub fn all() -> Vec<Case> {
             name: "diffuse::eon",
             family: Lobes,
             source: "Portsmouth et al. 2025, f_EON exact",
-            reference: |x| r::eon(&x[0], &x[1], &x[2], &x[3], &x[4]),
+            reference: |x| realizable(x, r::eon),
             kernels: kernel!(|x| diffuse::eon(x[0], x[1], x[2], x[3], x[4])),
             points: fujii_points,
             perturbed: harness::FIRST,

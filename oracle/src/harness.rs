@@ -190,50 +190,110 @@ pub struct Stats {
     pub failures: usize,
     /// The first failing point, if any: arguments, computed value, exact value.
     pub first_failure: Option<(Vec<f64>, f64, f64)>,
+    /// Ill-conditioned rows: the largest raw error in ULPs (not reduced by kappa)...
+    pub max_raw: f64,
+    /// ... the condition number at the point where it was reached ...
+    pub kappa_at_raw: f64,
+    /// ... and that point (recorded among the hardest inputs beside the top scores).
+    pub worst_raw: Vec<f64>,
+    /// The [`TOP`] highest-scoring points, highest first: (score, arguments). Recorded as
+    /// the hardest inputs (`crate::hardest`).
+    pub top: Vec<(f64, Vec<f64>)>,
 }
 
+/// How many of the highest-scoring points [`Stats::top`] keeps.
+pub const TOP: usize = 32;
+
 impl Stats {
-    /// Records one result; the error in ULPs is divided by `kappa` (1 outside
-    /// ill-conditioned rows) and the result perturbed by `perturb * kappa` relative.
-    fn record(&mut self, args: &[f64], y: f64, exact: &Float, ty: Ty, perturb: f64, kappa: f64) {
+    /// Records one result. Main rows score the error in ULPs; ill-conditioned rows (`ill`)
+    /// score it minus `kappa / 2`, the error one rounding of the input explains (module docs).
+    /// The result is multiplied by (1 + `perturb`) first (one rounding, to prove bounds tight).
+    #[allow(clippy::too_many_arguments)]
+    fn record(
+        &mut self,
+        args: &[f64],
+        y: f64,
+        exact: &Float,
+        ty: Ty,
+        perturb: f64,
+        kappa: f64,
+        ill: bool,
+    ) {
         self.points += 1;
         let ex = exact.to_f64();
-        let rounded = match ty {
-            Ty::F32 => f64::from(exact.to_f32()),
-            Ty::F64 => ex,
-        };
         let fail = |s: &mut Stats| {
             s.failures += 1;
             if s.first_failure.is_none() {
                 s.first_failure = Some((args.to_vec(), y, ex));
             }
         };
-        if rounded.is_infinite() {
-            self.overflow += 1;
-            if !(y.abs() >= ty.max() && y.signum() == ex.signum()) {
-                fail(self);
+        let raw = match classify(y, exact, ty, perturb) {
+            Scored::Overflow(ok) => {
+                self.overflow += 1;
+                if !ok {
+                    fail(self);
+                }
+                return;
             }
-            return;
-        }
-        if ex.abs() < ty.threshold() {
-            self.tiny += 1;
-            if !y.is_finite() || (y - ex).abs() > ty.threshold() {
-                fail(self);
+            Scored::Tiny(ok) => {
+                self.tiny += 1;
+                if !ok {
+                    fail(self);
+                }
+                return;
             }
-            return;
-        }
-        if !y.is_finite() {
+            Scored::Ulps(raw) => raw,
+        };
+        if raw.is_infinite() {
             fail(self);
-            self.max_ulp = f64::INFINITY;
-            self.worst = args.to_vec();
-            return;
         }
-        let err = ulp_error(y, exact, rounded, ty, perturb * kappa) / kappa;
-        if err > self.max_ulp {
-            self.max_ulp = err;
+        let score = if ill { raw - kappa / 2.0 } else { raw };
+        if score > self.max_ulp || self.worst.is_empty() {
+            self.max_ulp = score;
             self.worst = args.to_vec();
+        }
+        if raw > self.max_raw {
+            self.max_raw = raw;
+            self.kappa_at_raw = kappa;
+            self.worst_raw = args.to_vec();
+        }
+        if self.top.len() < TOP || score > self.top[TOP - 1].0 {
+            if self.top.len() == TOP {
+                self.top.pop();
+            }
+            let at = self.top.partition_point(|(s, _)| *s >= score);
+            self.top.insert(at, (score, args.to_vec()));
         }
     }
+}
+
+/// How a result is scored ([`classify`]).
+enum Scored {
+    /// round(exact) overflows the type: whether the result is capped correctly.
+    Overflow(bool),
+    /// |exact| is below [`Ty::threshold`]: whether the result is within it.
+    Tiny(bool),
+    /// The error in ULPs (inf for a NaN or infinite result).
+    Ulps(f64),
+}
+
+/// Classifies and scores the result `y` (multiplied by 1 + `perturb`) against `exact`.
+fn classify(y: f64, exact: &Float, ty: Ty, perturb: f64) -> Scored {
+    let ex = exact.to_f64();
+    let rounded = match ty {
+        Ty::F32 => f64::from(exact.to_f32()),
+        Ty::F64 => ex,
+    };
+    if rounded.is_infinite() {
+        return Scored::Overflow(y.abs() >= ty.max() && y.signum() == ex.signum());
+    }
+    if ex.abs() < ty.threshold() {
+        return Scored::Tiny(y.is_finite() && (y - ex).abs() <= ty.threshold());
+    }
+    if !y.is_finite() {
+        return Scored::Ulps(f64::INFINITY);
+    }
+    Scored::Ulps(ulp_error(y, exact, rounded, ty, perturb))
 }
 
 /// |y (1 + perturb) - exact| / ulp(rounded), computed in MPFR so that neither the difference
@@ -323,12 +383,20 @@ pub struct Options {
     pub check_reference: bool,
     /// Skip the lane types.
     pub scalars_only: bool,
+    /// The case is one half of a function split by conditioning (it or its twin carries the
+    /// [`ILL_CONDITIONED`] suffix): the hill-climb keeps to the half's side of
+    /// [`KAPPA_MAX`]. Set by `table::measure_all` and `check`.
+    pub split: bool,
+    /// Measure only the committed hardest inputs (`crate::hardest`): no fresh points, no
+    /// climb, so the figures are the same on every run (the published table).
+    pub hardest_only: bool,
 }
 
-/// What one (case, type) costs to prepare, kept for the process: the points, their
-/// references at [`PREC`], and the ill-conditioned rows' condition numbers. A test that
-/// measures every case more than once (the perturbation proof measures them three times)
-/// pays for the MPFR work once; the points functions are deterministic, so nothing changes.
+/// What one (case, type) costs to prepare, kept for the process: the points (the case's
+/// stiff and fresh points, the committed hardest inputs and every point the hill-climb
+/// visited), their references at [`PREC`], and the ill-conditioned rows' condition numbers.
+/// A test that measures every case more than once (the perturbation proof measures them
+/// three times) pays for the MPFR work once and measures the same points each time.
 #[derive(Clone)]
 struct Prepared {
     points: Vec<Vec<f64>>,
@@ -336,7 +404,9 @@ struct Prepared {
     kappas: Vec<f64>,
 }
 
-type Cache = std::sync::Mutex<std::collections::HashMap<(&'static str, Ty), Prepared>>;
+type Key = (&'static str, Ty, bool);
+type Slot = std::sync::Arc<std::sync::OnceLock<Prepared>>;
+type Cache = std::sync::Mutex<std::collections::HashMap<Key, Slot>>;
 
 fn cache() -> &'static Cache {
     static CACHE: std::sync::OnceLock<Cache> = std::sync::OnceLock::new();
@@ -361,39 +431,49 @@ pub fn conditioned_in(
         .collect()
 }
 
-/// The points of `case` for `ty`, each coordinate rounded to `ty`.
-#[must_use]
-pub fn points_for(case: &Case, ty: Ty) -> Vec<Vec<f64>> {
-    if let Some(p) = cache()
-        .lock()
-        .ok()
-        .and_then(|c| c.get(&(case.name, ty)).cloned())
-    {
-        return p.points;
-    }
-    (case.points)(ty)
-        .into_iter()
-        .map(|p| p.into_iter().map(|v| ty.round(v)).collect())
-        .collect()
+/// The points, references and condition numbers of (case, ty), from the cache or computed
+/// and cached. Each (case, type) is computed once: a second thread asking for it waits for
+/// the first, while other cases are prepared beside it.
+fn prepared(case: &Case, ty: Ty, opts: Options) -> Prepared {
+    let slot: Slot = {
+        let mut guard = cache()
+            .lock()
+            .unwrap_or_else(std::sync::PoisonError::into_inner);
+        guard
+            .entry((case.name, ty, opts.hardest_only))
+            .or_default()
+            .clone()
+    };
+    slot.get_or_init(|| prepare(case, ty, opts)).clone()
 }
 
-/// The points, references and condition numbers of (case, ty), from the cache or computed
-/// and cached.
-fn prepared(case: &Case, ty: Ty) -> Prepared {
-    // The lock is held while computing: a second test thread asking for the same case waits
-    // and then reads it, instead of repeating the MPFR work beside it.
-    let mut guard = cache()
-        .lock()
-        .unwrap_or_else(std::sync::PoisonError::into_inner);
-    if let Some(p) = guard.get(&(case.name, ty)) {
-        return p.clone();
-    }
-    let points: Vec<Vec<f64>> = (case.points)(ty)
-        .into_iter()
-        .map(|p| p.into_iter().map(|v| ty.round(v)).collect())
-        .collect();
-    let refs = references(case, &points, PREC);
+fn prepare(case: &Case, ty: Ty, opts: Options) -> Prepared {
+    let round = |p: Vec<f64>| p.into_iter().map(|v| ty.round(v)).collect::<Vec<f64>>();
     let ill = case.name.ends_with(ILL_CONDITIONED);
+    // A committed point of a split function counts in the half its condition number puts it
+    // in (a reported point may be listed under both); one outside the function's domain (its
+    // reference NaN: the domain was narrowed since it was recorded) is dropped.
+    let hardest: Vec<Vec<f64>> = crate::hardest::points(case.name, ty)
+        .into_iter()
+        .map(round)
+        .filter(|p| {
+            let prec = precision_for(p, PREC);
+            let args: Vec<Float> = p.iter().map(|&v| Float::with_val(prec, v)).collect();
+            !(case.reference)(&args).is_nan()
+                && (!opts.split
+                    || (condition(case.reference, ty, p, case.perturbed) > KAPPA_MAX) == ill)
+        })
+        .collect();
+    let points: Vec<Vec<f64>> = if opts.hardest_only {
+        hardest.into_iter().map(round).collect()
+    } else {
+        (case.points)(ty)
+            .into_iter()
+            .chain(hardest)
+            .map(round)
+            .collect()
+    };
+    let refs = references(case, &points, PREC);
     let kappas = points
         .iter()
         .zip(&refs)
@@ -405,13 +485,178 @@ fn prepared(case: &Case, ty: Ty) -> Prepared {
             }
         })
         .collect();
-    let prep = Prepared {
+    let mut prep = Prepared {
         points,
         refs,
         kappas,
     };
-    guard.insert((case.name, ty), prep.clone());
+    if !opts.hardest_only {
+        climb(case, ty, opts, &mut prep);
+    }
     prep
+}
+
+/// Hill-climb starting points and evaluations per start: (starts, evaluations) in an
+/// ordinary run and in a deep one (`points::deep`).
+pub const CLIMB: [(usize, usize); 2] = [(4, 40), (16, 400)];
+
+/// The score of the point `p` (exact value `exact`, condition number `kappa`): the larger of
+/// the scalar and the lane kernel's, as [`Stats::record`] scores them; `None` where the point
+/// is scored absolutely (tiny or overflowing results).
+fn point_score(
+    case: &Case,
+    ty: Ty,
+    p: &[f64],
+    exact: &Float,
+    kappa: f64,
+    ill: bool,
+) -> Option<f64> {
+    let (y, lane) = match ty {
+        Ty::F32 => {
+            let a: Vec<f32> = p.iter().map(|&v| v as f32).collect();
+            let pts = [p.to_vec()];
+            (
+                f64::from((case.kernels.f32)(&a)),
+                eval_lanes::<f32x8>(&pts, |v| v as f32, f64::from, case.kernels.f32x8)[0],
+            )
+        }
+        Ty::F64 => {
+            let pts = [p.to_vec()];
+            (
+                (case.kernels.f64)(p),
+                eval_lanes::<f64x4>(&pts, |v| v, |v| v, case.kernels.f64x4)[0],
+            )
+        }
+    };
+    let mut best = None::<f64>;
+    for v in [y, lane] {
+        if let Scored::Ulps(raw) = classify(v, exact, ty, 0.0) {
+            let s = if ill { raw - kappa / 2.0 } else { raw };
+            best = Some(best.map_or(s, |b| b.max(s)));
+        }
+    }
+    best
+}
+
+/// `x` moved by `n` floats of `ty` (up for n > 0).
+fn step(ty: Ty, mut x: f64, n: i32) -> f64 {
+    for _ in 0..n.unsigned_abs() {
+        x = if n > 0 {
+            ty.next_up(x)
+        } else {
+            ty.next_down(x)
+        };
+    }
+    x
+}
+
+/// Hill-climbs from the highest-scoring points of `prep`: each step moves one coordinate by
+/// 1 to 1024 floats either way and keeps the move when the score rises (a coordinate that
+/// only takes a few integer values, such as an output channel's index, is not moved). A
+/// candidate must stay
+/// inside the box the case's own points span in every coordinate (the sampled domain), have
+/// a reference that is not NaN, and, for a function split by conditioning, stay on its half's
+/// side of [`KAPPA_MAX`]. Every candidate evaluated joins the point set.
+fn climb(case: &Case, ty: Ty, opts: Options, prep: &mut Prepared) {
+    let ill = case.name.ends_with(ILL_CONDITIONED);
+    let Some(first) = prep.points.first() else {
+        return;
+    };
+    let dims = first.len();
+    let lo: Vec<f64> = (0..dims)
+        .map(|i| {
+            prep.points
+                .iter()
+                .map(|p| p[i])
+                .fold(f64::INFINITY, f64::min)
+        })
+        .collect();
+    let hi: Vec<f64> = (0..dims)
+        .map(|i| {
+            prep.points
+                .iter()
+                .map(|p| p[i])
+                .fold(f64::NEG_INFINITY, f64::max)
+        })
+        .collect();
+    // A coordinate whose values are all among a few integers selects (an output channel,
+    // say) rather than measures: the climb leaves it alone.
+    let movable: Vec<usize> = (0..dims)
+        .filter(|&i| {
+            let mut seen: Vec<f64> = Vec::new();
+            for p in &prep.points {
+                if p[i].fract() != 0.0 || p[i].abs() > 16.0 {
+                    return true;
+                }
+                if !seen.contains(&p[i]) {
+                    seen.push(p[i]);
+                }
+            }
+            seen.len() > 8
+        })
+        .collect();
+    if movable.is_empty() {
+        return;
+    }
+    let mut scored: Vec<(f64, usize)> = (0..prep.points.len())
+        .filter_map(|i| {
+            point_score(
+                case,
+                ty,
+                &prep.points[i],
+                &prep.refs[i],
+                prep.kappas[i],
+                ill,
+            )
+            .filter(|s| s.is_finite())
+            .map(|s| (s, i))
+        })
+        .collect();
+    scored.sort_by(|a, b| b.0.total_cmp(&a.0));
+    let (starts, budget) = CLIMB[usize::from(crate::points::deep())];
+    let mut g = crate::points::Rng::fresh(&format!("{} climb {ty:?}", case.name));
+    let starts: Vec<(f64, Vec<f64>)> = scored
+        .iter()
+        .take(starts)
+        .map(|&(s, i)| (s, prep.points[i].clone()))
+        .collect();
+    for (mut best, mut cur) in starts {
+        for _ in 0..budget {
+            let i = movable[((g.uniform() * movable.len() as f64) as usize).min(movable.len() - 1)];
+            let n = 1 << (g.uniform() * 11.0) as i32;
+            let n = if g.uniform() < 0.5 { -n } else { n };
+            let mut q = cur.clone();
+            q[i] = step(ty, q[i], n);
+            if !(q[i] >= lo[i] && q[i] <= hi[i]) {
+                continue;
+            }
+            let prec = precision_for(&q, PREC);
+            let args: Vec<Float> = q.iter().map(|&v| Float::with_val(prec, v)).collect();
+            let r = (case.reference)(&args);
+            if r.is_nan() {
+                continue;
+            }
+            let kappa = if opts.split || ill {
+                let k = condition(case.reference, ty, &q, case.perturbed);
+                if (k > KAPPA_MAX) != ill {
+                    continue;
+                }
+                if ill { k.max(1.0) } else { 1.0 }
+            } else {
+                1.0
+            };
+            let s = point_score(case, ty, &q, &r, kappa, ill);
+            prep.points.push(q.clone());
+            prep.refs.push(r);
+            prep.kappas.push(kappa);
+            if let Some(s) = s
+                && s > best
+            {
+                best = s;
+                cur = q;
+            }
+        }
+    }
 }
 
 /// The working precision for the point `p`: `base` plus twice the largest binary exponent of
@@ -465,12 +710,13 @@ fn eval_lanes<T: Real>(
 #[must_use]
 pub fn measure(case: &Case, opts: Options) -> Measurement {
     let mut m = Measurement::default();
+    let ill = case.name.ends_with(ILL_CONDITIONED);
     for ty in [Ty::F32, Ty::F64] {
         let Prepared {
             points: pts,
             refs,
             kappas,
-        } = prepared(case, ty);
+        } = prepared(case, ty, opts);
         if let Some(i) = refs.iter().position(Float::is_nan) {
             panic!("{}: reference is NaN at {:?}", case.name, pts[i]);
         }
@@ -512,9 +758,9 @@ pub fn measure(case: &Case, opts: Options) -> Measurement {
         };
         for (i, p) in pts.iter().enumerate() {
             let kappa = kappas[i];
-            s_stats.record(p, scalar[i], &refs[i], ty, perturb, kappa);
+            s_stats.record(p, scalar[i], &refs[i], ty, perturb, kappa, ill);
             if let Some(l) = &lanes {
-                l_stats.record(p, l[i], &refs[i], ty, perturb, kappa);
+                l_stats.record(p, l[i], &refs[i], ty, perturb, kappa, ill);
             }
         }
     }

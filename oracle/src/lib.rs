@@ -7,12 +7,19 @@
 //! [`bounds`] holds the bound each test asserts; [`table`] renders the measured table that
 //! `docs/accuracy.md` publishes.
 //!
+//! Every run measures fresh random points (seeded from `BRDF_ORACLE_SEED` or the clock, and
+//! printed), the committed [`hardest`] inputs and a short hill-climb from the worst points.
+//!
 //! Run: `cargo test -p brdf-oracle --release -- --nocapture` (needs GMP and MPFR: Debian's
-//! `libgmp-dev` and `libmpfr-dev`). Regenerate `docs/accuracy.md`:
+//! `libgmp-dev` and `libmpfr-dev`). Deep search (10^5 fresh points per function
+//! and type, a longer climb; tens of minutes) recording the hardest inputs:
+//! `BRDF_ORACLE_DEEP=1 BRDF_ORACLE_RECORD=1 cargo test -p brdf-oracle --release --test accuracy_table -- --nocapture`.
+//! Regenerate `docs/accuracy.md` from them:
 //! `BLESS=1 cargo test -p brdf-oracle --release --test accuracy_table`.
 
 pub mod bounds;
 pub mod cases;
+pub mod hardest;
 pub mod harness;
 pub mod points;
 pub mod reference;
@@ -32,7 +39,13 @@ pub const PREC: u32 = 256;
 /// When a bound is exceeded or a point fails: that is the test failing.
 pub fn check(name: &str) {
     let case = cases::by_name(name);
-    let m = harness::measure(&case, harness::Options::default());
+    let m = harness::measure(
+        &case,
+        harness::Options {
+            split: table::is_split(name),
+            ..harness::Options::default()
+        },
+    );
     let b = bounds::bound(name);
     println!("{}", table::detail_header());
     println!("{}", table::detail_row(&case, &m, &b));
@@ -57,5 +70,11 @@ pub fn check(name: &str) {
             ));
         }
     }
-    assert!(errors.is_empty(), "{name}:\n{}", errors.join("\n"));
+    assert!(
+        errors.is_empty(),
+        "{name} (fresh points from BRDF_ORACLE_SEED={}, {} build):\n{}",
+        points::seed(),
+        hardest::build(),
+        errors.join("\n")
+    );
 }

@@ -1,12 +1,58 @@
 //! Point sets: the stiff values of each kind of argument (poles, breakpoints and their
-//! neighbouring floats, the ends of the domain) crossed with each other, plus a seeded random
-//! sample. Every list is deterministic; the harness rounds each coordinate to the target type,
-//! so the reference is evaluated at exactly the value the kernel sees.
+//! neighbouring floats, the ends of the domain) crossed with each other, plus a random sample
+//! drawn fresh on every run. The harness rounds each coordinate to the target type, so the
+//! reference is evaluated at exactly the value the kernel sees.
+//!
+//! Fresh points: the random sample of each case is seeded from the run's [`seed`]
+//! (`BRDF_ORACLE_SEED` when set, the clock otherwise), so every run measures new points and
+//! any failure reproduces with the seed it prints. [`random_points`] per case and type:
+//! `BRDF_ORACLE_POINTS` when set, [`DEEP_POINTS`] with `BRDF_ORACLE_DEEP=1`, else
+//! [`RANDOM_POINTS`].
 
 use crate::harness::Ty;
 
-/// Random points per case and type.
+/// Random points per case and type in an ordinary run (CI).
 pub const RANDOM_POINTS: usize = 2000;
+
+/// Random points per case and type in a deep run (`BRDF_ORACLE_DEEP=1`).
+pub const DEEP_POINTS: usize = 100_000;
+
+/// Whether this is a deep run (`BRDF_ORACLE_DEEP` set to anything but `0`): more random
+/// points, a longer hill-climb from more starting points.
+#[must_use]
+pub fn deep() -> bool {
+    std::env::var("BRDF_ORACLE_DEEP").is_ok_and(|v| v != "0")
+}
+
+/// Random points per case and type: `BRDF_ORACLE_POINTS`, or [`DEEP_POINTS`] in a deep run,
+/// or [`RANDOM_POINTS`].
+#[must_use]
+pub fn random_points() -> usize {
+    std::env::var("BRDF_ORACLE_POINTS")
+        .ok()
+        .and_then(|v| v.parse().ok())
+        .unwrap_or(if deep() { DEEP_POINTS } else { RANDOM_POINTS })
+}
+
+/// The seed of this run's fresh points: `BRDF_ORACLE_SEED` (a decimal u64) when set,
+/// otherwise the clock's nanoseconds. Printed to stderr on first use; failure messages
+/// repeat it.
+#[must_use]
+pub fn seed() -> u64 {
+    static SEED: std::sync::OnceLock<u64> = std::sync::OnceLock::new();
+    *SEED.get_or_init(|| {
+        let s = std::env::var("BRDF_ORACLE_SEED")
+            .ok()
+            .and_then(|v| v.trim().parse().ok())
+            .unwrap_or_else(|| {
+                std::time::SystemTime::now()
+                    .duration_since(std::time::UNIX_EPOCH)
+                    .map_or(1, |d| d.as_nanos() as u64)
+            });
+        eprintln!("brdf-oracle: fresh points from BRDF_ORACLE_SEED={s}");
+        s
+    })
+}
 
 /// The smallest alpha sampled: `brdf::microfacet::ALPHA_MIN`; below it the kernels clamp
 /// alpha on purpose and differ from the paper.
@@ -29,6 +75,20 @@ impl Rng {
             h = (h ^ u64::from(b)).wrapping_mul(0x0100_0000_01b3);
         }
         Self(h | 1)
+    }
+
+    /// A generator for `name`'s fresh points in this run: [`Rng::for_case`] mixed with the
+    /// run's [`seed`].
+    #[must_use]
+    pub fn fresh(name: &str) -> Self {
+        let mut g = Self::for_case(name);
+        // splitmix64 of the seed, so that nearby seeds give unrelated streams.
+        let mut z = seed().wrapping_add(0x9e37_79b9_7f4a_7c15);
+        z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
+        z ^= z >> 31;
+        g.0 = (g.0 ^ z) | 1;
+        g
     }
 
     /// Uniform in [0, 1).
@@ -179,9 +239,91 @@ pub fn grid(axes: &[Vec<f64>]) -> Vec<Vec<f64>> {
     })
 }
 
-/// [`RANDOM_POINTS`] points from `f`, seeded by `name`.
+/// [`random_points`] fresh points from `f`, from the generator [`Rng::fresh`] of `name`.
 #[must_use]
 pub fn random(name: &str, mut f: impl FnMut(&mut Rng) -> Vec<f64>) -> Vec<Vec<f64>> {
-    let mut rng = Rng::for_case(name);
-    (0..RANDOM_POINTS).map(|_| f(&mut rng)).collect()
+    let mut rng = Rng::fresh(name);
+    (0..random_points()).map(|_| f(&mut rng)).collect()
+}
+
+/// The smallest positive (subnormal) and the largest finite value of `ty`.
+#[must_use]
+pub fn full_range(ty: Ty) -> (f64, f64) {
+    match ty {
+        Ty::F32 => (f64::from(f32::from_bits(1)), f64::from(f32::MAX)),
+        Ty::F64 => (f64::from_bits(1), f64::MAX),
+    }
+}
+
+/// Log-uniform over (0, MAX] of `ty` (uniform in the binary exponent).
+pub fn log_all(g: &mut Rng, ty: Ty) -> f64 {
+    let (lo, hi) = full_range(ty);
+    let (a, b) = (lo.log2(), hi.log2());
+    (a + (b - a) * g.uniform()).exp2().clamp(lo, hi)
+}
+
+/// A value within a few floats (half the time) or a few percent of `x`, either side.
+pub fn near(g: &mut Rng, ty: Ty, x: f64) -> f64 {
+    if g.uniform() < 0.5 {
+        let mut y = ty.round(x);
+        for _ in 0..(g.uniform() * 4.0) as u32 {
+            y = if g.uniform() < 0.5 {
+                ty.next_up(y)
+            } else {
+                ty.next_down(y)
+            };
+        }
+        y
+    } else {
+        x * g.log_range(0.9, 1.0 / 0.9)
+    }
+}
+
+/// A cosine in [0, 1] over the whole range of `ty`: uniform, log-uniform down to the
+/// smallest subnormal, near 1, or an end.
+pub fn cosine_full(g: &mut Rng, ty: Ty) -> f64 {
+    match (g.uniform() * 10.0) as u32 {
+        0..=3 => g.uniform(),
+        4 | 5 => log_all(g, ty).min(1.0),
+        6 | 7 => 1.0 - g.log_range(1e-17, 1.0),
+        8 => g.log_range(1e-8, 1.0),
+        _ => [0.0, 1.0][(g.uniform() * 2.0) as usize],
+    }
+}
+
+/// A relative index over the whole documented domain (0, MAX]: log-uniform over it, near 1
+/// on either side, common materials in [0.05, 20], and both sides of the dielectric's switch
+/// to its ratio form at 1/256 and 256.
+pub fn eta_full(g: &mut Rng, ty: Ty) -> f64 {
+    match (g.uniform() * 10.0) as u32 {
+        0..=2 => log_all(g, ty),
+        3 if g.uniform() < 0.5 => near(g, ty, 1.0),
+        3 => 1.0 + g.log_range(1e-9, 0.1) * if g.uniform() < 0.5 { 1.0 } else { -1.0 },
+        4..=6 => g.log_range(0.05, 20.0),
+        7 => near(g, ty, 256.0),
+        8 => near(g, ty, 1.0 / 256.0),
+        _ => g.log_range(1e-6, 1e6),
+    }
+}
+
+/// The conductor's threshold EPSILON^2 of `ty` (its tiny-N scaling branch).
+#[must_use]
+pub fn eps2(ty: Ty) -> f64 {
+    match ty {
+        Ty::F32 => 2f64.powi(-46),
+        Ty::F64 => 2f64.powi(-104),
+    }
+}
+
+/// An extinction coefficient k over [0, MAX]: 0, log-uniform over the whole range, moderate,
+/// and both sides of the conductor's scaling thresholds 2^16 and EPSILON^2.
+pub fn k_full(g: &mut Rng, ty: Ty) -> f64 {
+    match (g.uniform() * 10.0) as u32 {
+        0 => 0.0,
+        1..=3 => log_all(g, ty),
+        4..=6 => g.log_range(1e-3, 10.0),
+        7 => near(g, ty, 65536.0),
+        8 => near(g, ty, eps2(ty)),
+        _ => g.log_range(1e-8, 1e8),
+    }
 }

@@ -205,6 +205,12 @@ pub fn fresnel_dielectric_polarized(cos_i: &Float, eta: &Float) -> (Float, Float
     } else {
         (cos_i.clone(), eta.clone())
     };
+    // eta = 1 is no interface: 0 at every cosine, grazing included (where the limit along
+    // cos -> 0 at any other eta is 1, and sin^2(theta_t) = 1 below would call it total
+    // internal reflection).
+    if eta == 1 {
+        return (num(p, 0.0), num(p, 0.0));
+    }
     let sin2_t = (1i32 - sq(&c)) / sq(&eta);
     if sin2_t >= 1 {
         return (num(p, 1.0), num(p, 1.0));
@@ -277,6 +283,11 @@ fn c_sqrt(a: &Complex) -> Complex {
 pub fn fresnel_conductor(cos_i: &Float, eta: &Float, k: &Float) -> Float {
     let p = cos_i.prec();
     let zero = num(p, 0.0);
+    // eta = 1, k = 0 is no interface: 0 at every cosine (grazing, where the formula is 0 / 0,
+    // included).
+    if *eta == 1 && k.is_zero() {
+        return zero;
+    }
     let eta_c: Complex = (eta.clone(), k.clone());
     let sin2 = 1i32 - sq(cos_i);
     let inv_e2 = c_recip(&c_mul(&eta_c, &eta_c));

@@ -96,8 +96,8 @@ fn colours(ty: Ty, name: &str) -> Vec<[f64; 3]> {
     for x in around(ty, 0.8, 4) {
         c.extend([[x, x, x], [x, 0.3, 0.1], [0.04, 0.5, x]]);
     }
-    let mut g = Rng::for_case(name);
-    for _ in 0..crate::points::RANDOM_POINTS / 3 {
+    let mut g = Rng::fresh(name);
+    for _ in 0..crate::points::random_points() / 3 {
         c.push([0, 1, 2].map(|_| {
             if g.uniform() < 0.1 {
                 0.0
@@ -245,7 +245,9 @@ fn lottes_points(ty: Ty) -> Vec<Vec<f64>> {
     scalar(ty, "tonemap::lottes", &[l.hdr_max, l.mid_in])
 }
 
-fn ref_uchimura(x: &[Float]) -> Float {
+/// The reference of `tonemap::uchimura` with the Gran Turismo parameters at `x[0]`.
+#[must_use]
+pub fn ref_uchimura(x: &[Float]) -> Float {
     let u = UchimuraParams::GRAN_TURISMO;
     let p = x[0].prec();
     let k = [
@@ -432,7 +434,7 @@ fn agx_points(ty: Ty) -> Vec<Vec<f64>> {
             }
         }
     }
-    let mut g = Rng::for_case("tonemap::agx");
+    let mut g = Rng::fresh("tonemap::agx");
     for _ in 0..300 {
         c.push([0, 1, 2].map(|_| {
             if g.uniform() < 0.1 {

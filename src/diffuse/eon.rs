@@ -30,8 +30,10 @@
 //! paper's listing guards with `max(1e-7, ...)`: 1 - E(mu) = sigma (c1 - G(mu)/pi) A and
 //! 1 - E_avg = sigma (c1 - c2) A, so (1 - E_o)(1 - E_i)/(1 - E_avg) =
 //! sigma A (c1 - g_o)(c1 - g_i)/(c1 - c2), which is exactly 0 at sigma = 0 (EON is then
-//! Lambert exactly, where the listing adds rho^2 1e-7 / pi). Each factor c1 - g is clamped at
-//! 0: the fit overshoots c1 by 4.6e-4 at grazing, where the exact value is 0.
+//! Lambert exactly, where the listing adds rho^2 1e-7 / pi). With the fit, each factor c1 - g is
+//! clamped at 0: the fit overshoots c1 by 4.6e-4 at grazing, where the exact value is 0. The
+//! exact c1 - G/pi is not formed as a difference at all (it cancels towards grazing): it is
+//! computed as S asin(mu) + (1 - S)(...) with nothing left to cancel (see `pi_loss_exact`).
 //!
 //! As everywhere in this crate, a parameter outside its domain gives NaN for every pair of
 //! directions, those below the horizon included, and a NaN input gives NaN.
@@ -49,9 +51,21 @@ const C1: f64 = 0.287_793_409_210_806_2;
 /// c1 - `C1`, the rest of c1 beyond f64.
 const C1_TAIL: f64 = 1.311_911_778_345_499_2e-17;
 /// c2 = 2/3 - 28/(15 pi) = 2 integral_0^1 (G(mu)/pi) mu dmu: the average albedo's slope.
-const C2: f64 = 0.072_488_212_456_923_94;
+const C2: f64 = 0.072_488_212_456_924_08;
+/// c2 - `C2`.
+const C2_TAIL: f64 = 1.576_467_347_210_685_2e-18;
 /// c1 - c2, the factor of sigma A in 1 - E_avg.
-const C1_MINUS_C2: f64 = 0.215_305_196_753_882_27;
+const C1_MINUS_C2: f64 = 0.215_305_196_753_882_13;
+/// (c1 - c2) - `C1_MINUS_C2`.
+const C1_MINUS_C2_TAIL: f64 = 1.154_265_043_624_430_6e-17;
+/// 1 / (pi^3 (c1 - c2)): the constant of the compensation lobe written in pi c1 - G (below).
+const MS_SCALE: f64 = 0.149_794_500_641_183_27;
+/// `MS_SCALE`'s rest beyond f64.
+const MS_SCALE_TAIL: f64 = 4.333_174_584_654_001e-18;
+/// pi c1 = pi/2 - 2/3 = pi (1 - E(1)) / (sigma A): E's deficit at normal incidence.
+const PI_C1: f64 = 0.904_129_660_128_229_9;
+/// `PI_C1`'s rest beyond f64.
+const PI_C1_TAIL: f64 = 2.422_490_580_319_577_5e-17;
 /// The paper's fit of G(mu)/pi as a quartic in 1 - mu (coefficients of (1-mu)^1..(1-mu)^4).
 const G_FIT: [f64; 4] = [
     0.057_108_528_9,
@@ -66,17 +80,31 @@ fn fon_a<T: Real>(sigma: T) -> T {
     T::splat(C1).mul_add(sigma, T::ONE).recip()
 }
 
-/// G(mu)/pi for mu in [0, 1], exactly (the FON albedo integral; Portsmouth et al. 2025, `E_FON_exact`):
-/// G = S (acos(mu) - S mu) + (2/3) ((S/mu)(1 - S^3) - S) with S = sqrt(1 - mu^2).
-///
-/// The term (S/mu)(1 - S^3) is rewritten S mu (1 + S + S^2)/(1 + S) (using 1 - S = mu^2/(1 + S)):
-/// as printed it is 0 * inf = NaN at mu = 0 and cancels to 0 in f32 below mu = 3e-4.
+/// pi c1 - G(mu) = pi (1 - E(mu)) / (sigma A) for mu in [0, 1] (the FON albedo integral;
+/// Portsmouth et al. 2025, `E_FON_exact`) as a double word. G as printed,
+/// S (acos(mu) - S mu) + (2/3)((S/mu)(1 - S^3) - S) with S = sqrt(1 - mu^2), tends to pi c1
+/// at grazing, so c1 - G/pi cancels: 13 ULP lost at mu = 0.15 in f64, and in f32 all of them
+/// below mu = 1e-7, where c1 - G/pi, about mu/pi, is below an ULP of c1. With
+/// acos = pi/2 - asin and (S/mu)(1 - S^3) = S mu (1 + S + S^2)/(1 + S) (from
+/// 1 - S = mu^2/(1 + S)), the constant and the O(mu) terms cancel symbolically:
+/// pi c1 - G = S asin(mu) + (1 - S) (pi c1 - S mu (2 + S) / (3 (1 + S))),
+/// two terms >= 0, the subtraction taking at most 0.3 of pi c1. 1 - S is formed as
+/// mu^2/(1 + S) where it would cancel (S > 1/2); pi c1, the products and the sum are carried in
+/// double words, so the roundings left are those of S, `asin` and the bracket's small term.
 #[inline]
-fn g_exact<T: Real>(mu: T) -> T {
+fn pi_loss_exact<T: Real>(mu: T) -> Dw<T> {
     let si = ((T::ONE - mu) * (T::ONE + mu)).sqrt_nonneg();
-    let arc = si * si.mul_add(-mu, mu.acos());
-    let poly = si * (mu * si.mul_add(si, si + T::ONE) / (T::ONE + si) - T::ONE);
-    T::splat(2.0 / 3.0).mul_add(poly, arc) * T::FRAC_1_PI
+    let one_plus_si = T::ONE + si;
+    let one_minus_si = T::select(si.simd_gt(T::HALF), mu * mu / one_plus_si, T::ONE - si);
+    let bracket = Dw::constant(PI_C1, PI_C1_TAIL)
+        .add_t(-(si * mu * (si + T::TWO) / (T::splat(3.0) * one_plus_si)));
+    Dw::product(si, mu.asin()).add(bracket.mul(Dw::exact(one_minus_si)))
+}
+
+/// c1 - G(mu)/pi from [`pi_loss_exact`], rounded once.
+#[inline]
+fn loss_exact<T: Real>(mu: T) -> T {
+    Dw::frac_1_pi().mul(pi_loss_exact(mu)).value()
 }
 
 /// The paper's fit of G(mu)/pi: sum of G_FIT[k] (1 - mu)^(k+1), Horner form.
@@ -89,10 +117,16 @@ fn g_fit<T: Real>(mu: T) -> T {
     p * m
 }
 
-/// c1 - G(mu)/pi, clamped at 0 (see the module notes); NaN propagates.
+/// c1 - G(mu)/pi from the fit, clamped at 0 (see the module notes); NaN propagates.
 #[inline]
-fn loss<T: Real>(g: T) -> T {
-    (T::splat(C1) - g).max(T::ZERO)
+fn loss_fit<T: Real>(mu: T) -> T {
+    (T::splat(C1) - g_fit(mu)).max(T::ZERO)
+}
+
+/// pi c1 - G(mu) from the fit (as [`pi_loss_exact`]).
+#[inline]
+fn pi_loss_fit<T: Real>(mu: T) -> Dw<T> {
+    Dw::exact(T::PI * loss_fit(mu))
 }
 
 /// rho_ms for an already checked rho and sigma, given A.
@@ -111,7 +145,7 @@ fn rho_ms_with<T: Real>(rho: T, sigma: T, a: T) -> T {
     T::select(rho.simd_eq(T::ONE), one, q.min(rho))
 }
 
-/// The EON kernel with a given G/pi (exact or fitted).
+/// The EON kernel with a given pi c1 - G (exact or fitted).
 #[inline]
 fn eon_with<T: Real>(
     n_dot_v: T,
@@ -119,7 +153,7 @@ fn eon_with<T: Real>(
     v_dot_l: T,
     rho: T,
     sigma: T,
-    g: impl Fn(T) -> T,
+    pi_loss: impl Fn(T) -> Dw<T>,
 ) -> T {
     let rho = checked_unit(rho);
     let sigma = checked_unit(sigma);
@@ -137,18 +171,39 @@ fn eon_with<T: Real>(
     let (shape, t) = super::fujii_shape(mu_o, mu_i, v_dot_l, sigma);
     let den = Dw::constant(C1, C1_TAIL)
         .mul(Dw::exact(sigma))
-        .add(Dw::exact(T::ONE));
+        .add_t(T::ONE);
     let single = Dw::frac_1_pi().mul(Dw::exact(rho)).mul(shape).div(den);
     // Divided by t last (exact where t = 1): s / t can be too large for Dekker's split.
     let single = Dw {
         hi: single.hi / t,
         lo: single.lo / t,
     };
-    let a = fon_a(sigma);
-    let multi = sigma * a * loss(g(mu_o)) * loss(g(mu_i)) * T::splat(1.0 / C1_MINUS_C2);
-    let value = single
-        .add(Dw::exact(rho_ms_with(rho, sigma, a) * multi * T::FRAC_1_PI))
-        .value();
+    // f_ms = rho_ms/pi sigma A (c1 - g_o)(c1 - g_i)/(c1 - c2) with A cancelled from rho_ms =
+    // rho^2 (1 + c2 sigma) / (1 + c1 sigma - rho sigma (c1 - c2)) and c1 - g = L/pi,
+    // L = pi c1 - G: rho^2 sigma (1 + c2 sigma) L_o L_i / ((1 + c1 sigma) (1 + c1 sigma -
+    // rho sigma (c1 - c2)) pi^3 (c1 - c2)), one quotient of sums that do not cancel. Carried
+    // in double words: this lobe is up to about a third of f (both directions grazing on
+    // opposite sides, where 1 + sigma s/t cancels, or both near the normal), and its ten
+    // roundings in working precision cost up to 3 ULP of f in the oracle's search.
+    let rho_sigma = Dw::product(rho, sigma);
+    let ms_den = den.mul(
+        den.add(
+            rho_sigma
+                .mul(Dw::constant(C1_MINUS_C2, C1_MINUS_C2_TAIL))
+                .neg(),
+        ),
+    );
+    let ms_num = rho_sigma
+        .mul(Dw::exact(rho))
+        .mul(
+            Dw::constant(C2, C2_TAIL)
+                .mul(Dw::exact(sigma))
+                .add_t(T::ONE),
+        )
+        .mul(Dw::constant(MS_SCALE, MS_SCALE_TAIL))
+        .mul(pi_loss(mu_o))
+        .mul(pi_loss(mu_i));
+    let value = single.add(ms_num.div(ms_den)).value();
     // The domain check wraps the horizon guard: a bad parameter (or a NaN v.l) is NaN below
     // the horizon too.
     nan_unless(
@@ -172,10 +227,16 @@ fn eon_with<T: Real>(
 /// when both directions graze on the same side f grows like sigma/(pi max(n.v, n.l)) (the
 /// backscattering peak), finite for every finite input.
 ///
-/// Accuracy against the paper's definition evaluated in MPFR (`cargo test -p brdf-oracle --release --test lobes -- --nocapture`): max 1.94 ULP (f32),
-/// 2.06 (f64), 1.57 (f32x8) and 1.98 (f64x4); the single-scattering shape 1 + sigma s/t, which
-/// cancels for opposite grazing directions, is carried in double words. Lanes differ from
-/// scalars in the last bits where the lane `acos` (a polynomial, not libm's) enters E(mu).
+/// Accuracy against the paper's definition evaluated in MPFR: within 1.4 ULP (f32), 1.3 (f64),
+/// 1.5 (f32x8) and 1.4 (f64x4) of the correctly rounded value, max 1.15, 1.14, 1.25 and 1.16
+/// found by the oracle's deep search (10^5 fresh points per type plus a longer hill-climb,
+/// `BRDF_ORACLE_DEEP=1 BRDF_ORACLE_RECORD=1 cargo test -p brdf-oracle --release --test
+/// accuracy_table -- --nocapture`; `docs/accuracy.md`).
+/// The single-scattering shape 1 + sigma s/t, which cancels for opposite grazing directions,
+/// and the compensation lobe, up to about a third of f, are carried in double words; E's
+/// deficit 1 - E(mu), which cancels towards grazing as printed, is computed in a form without
+/// cancellation. Lanes differ from scalars in the last bits where the lane `asin` (a
+/// polynomial, not libm's) enters it.
 ///
 /// Source: Portsmouth, Kutz, Hill 2025, "EON: A Practical Energy-Preserving Rough Diffuse
 /// BRDF", JCGT 14(1), the `f_EON` listing with `exact = true`; Fujii 2012, "A tiny improvement
@@ -183,7 +244,7 @@ fn eon_with<T: Real>(
 #[inline]
 #[must_use]
 pub fn eon<T: Real>(n_dot_v: T, n_dot_l: T, v_dot_l: T, rho: T, sigma: T) -> T {
-    eon_with(n_dot_v, n_dot_l, v_dot_l, rho, sigma, g_exact)
+    eon_with(n_dot_v, n_dot_l, v_dot_l, rho, sigma, pi_loss_exact)
 }
 
 /// [`eon`] with the FON albedo E(mu) from the paper's quartic fit ([`eon_fon_albedo_approx`])
@@ -196,7 +257,7 @@ pub fn eon<T: Real>(n_dot_v: T, n_dot_l: T, v_dot_l: T, rho: T, sigma: T) -> T {
 #[inline]
 #[must_use]
 pub fn eon_approx<T: Real>(n_dot_v: T, n_dot_l: T, v_dot_l: T, rho: T, sigma: T) -> T {
-    eon_with(n_dot_v, n_dot_l, v_dot_l, rho, sigma, g_fit)
+    eon_with(n_dot_v, n_dot_l, v_dot_l, rho, sigma, pi_loss_fit)
 }
 
 /// FON directional albedo at rho = 1, exactly: E(mu) = A (1 + sigma G(mu)/pi), with
@@ -211,7 +272,7 @@ pub fn eon_approx<T: Real>(n_dot_v: T, n_dot_l: T, v_dot_l: T, rho: T, sigma: T)
 #[inline]
 #[must_use]
 pub fn eon_fon_albedo<T: Real>(n_dot_v: T, sigma: T) -> T {
-    fon_albedo_with(n_dot_v, sigma, g_exact)
+    fon_albedo_with(n_dot_v, sigma, loss_exact)
 }
 
 /// FON directional albedo at rho = 1 from the paper's fit of G(mu)/pi:
@@ -227,15 +288,15 @@ pub fn eon_fon_albedo<T: Real>(n_dot_v: T, sigma: T) -> T {
 #[inline]
 #[must_use]
 pub fn eon_fon_albedo_approx<T: Real>(n_dot_v: T, sigma: T) -> T {
-    fon_albedo_with(n_dot_v, sigma, g_fit)
+    fon_albedo_with(n_dot_v, sigma, loss_fit)
 }
 
 #[inline]
-fn fon_albedo_with<T: Real>(n_dot_v: T, sigma: T, g: impl Fn(T) -> T) -> T {
+fn fon_albedo_with<T: Real>(n_dot_v: T, sigma: T, loss: impl Fn(T) -> T) -> T {
     let sigma = checked_unit(sigma);
     let mu = n_dot_v.clamp(T::ZERO, T::ONE);
     // 1 - E = sigma A (c1 - g): the form shared with the BRDF, so the cap at 1 is the same.
-    let e = T::ONE - sigma * fon_a(sigma) * loss(g(mu));
+    let e = T::ONE - sigma * fon_a(sigma) * loss(mu);
     nan_unless(in_unit(sigma), above_horizon(n_dot_v, T::ONE, e))
 }
 
@@ -284,7 +345,7 @@ pub fn eon_multiscatter_albedo<T: Real>(rho: T, sigma: T) -> T {
 #[inline]
 #[must_use]
 pub fn eon_albedo<T: Real>(n_dot_v: T, rho: T, sigma: T) -> T {
-    eon_albedo_with(n_dot_v, rho, sigma, g_exact)
+    eon_albedo_with(n_dot_v, rho, sigma, loss_exact)
 }
 
 /// Directional albedo of the fitted model, rho E(mu) + rho_ms (1 - E(mu)) with E from
@@ -299,15 +360,15 @@ pub fn eon_albedo<T: Real>(n_dot_v: T, rho: T, sigma: T) -> T {
 #[inline]
 #[must_use]
 pub fn eon_albedo_approx<T: Real>(n_dot_v: T, rho: T, sigma: T) -> T {
-    eon_albedo_with(n_dot_v, rho, sigma, g_fit)
+    eon_albedo_with(n_dot_v, rho, sigma, loss_fit)
 }
 
 #[inline]
-fn eon_albedo_with<T: Real>(n_dot_v: T, rho: T, sigma: T, g: impl Fn(T) -> T) -> T {
+fn eon_albedo_with<T: Real>(n_dot_v: T, rho: T, sigma: T, loss: impl Fn(T) -> T) -> T {
     let (rho, sigma) = (checked_unit(rho), checked_unit(sigma));
     let mu = n_dot_v.clamp(T::ZERO, T::ONE);
     let a = fon_a(sigma);
-    let one_minus_e = sigma * a * loss(g(mu));
+    let one_minus_e = sigma * a * loss(mu);
     let rho_ms = rho_ms_with(rho, sigma, a);
     // rho E + rho_ms (1 - E) = rho + (rho_ms - rho)(1 - E).
     let value = (rho_ms - rho).mul_add(one_minus_e, rho);

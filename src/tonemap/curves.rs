@@ -4,7 +4,7 @@
 use super::{per_channel, sanitize, sanitize_rgb, saturate_rgb};
 use crate::color::{self, ACES_HILL_INPUT, ACES_HILL_OUTPUT, luminance};
 use crate::domain::{nan_unless, nan_where};
-use crate::dw::{Dw, two_sum};
+use crate::dw::Dw;
 use crate::error::{ParamError, require};
 use crate::real::Real;
 use crate::vec3::V3;
@@ -64,6 +64,11 @@ pub fn reinhard<T: Real>(c: T) -> T {
 /// negative, +inf and NaN give NaN. c / w^2 is formed as (c / w) / w, so a subnormal w
 /// neither overflows w^2 to 0 nor forms 0 / 0 at c = 0.
 ///
+/// Evaluated in double words of the lane type (about 48 bits for f32 lanes, 106 for f64) and
+/// rounded once (plain arithmetic, six roundings, reached 3.3 ulps). Where 1 + c / w^2
+/// exceeds 2^64 (a white point far below c, where the result all but saturates) the plain
+/// form is used, so no double word overflows.
+///
 /// Peers: none of three.js, Filament and bevy ships it. The paper applies eq. 4 to
 /// luminance: that is [`reinhard_extended_luminance`].
 #[inline]
@@ -71,13 +76,37 @@ pub fn reinhard<T: Real>(c: T) -> T {
 pub fn reinhard_extended<T: Real>(c: T, white: T) -> T {
     let c = sanitize(c);
     let ok = white.simd_gt(T::ZERO) & white.simd_le(T::MAX);
-    let v = (c * (T::ONE + c / white / white) / (T::ONE + c)).saturate();
-    nan_unless(ok, v)
+    let num = T::ONE + c / white / white;
+    let plain = c * num / (T::ONE + c);
+    // Below 2^64 the double words stay far inside f32's range (c <= MAX_INPUT = 1e9); above
+    // it the plain lanes are selected, whatever the double words gave there.
+    let precise = num.simd_lt(T::splat(18_446_744_073_709_551_616.0));
+    // Above w = 2^64, c / w^2 < 1e9 / 2^128 is far below an ulp of 1 and num is 1: the double
+    // words would otherwise split w itself, which overflows near MAX.
+    let (cd, wd) = (
+        Dw::exact(c),
+        Dw::exact(T::select(huge(white), T::ONE, white)),
+    );
+    let num_dw = Dw::select(
+        huge(white),
+        Dw::exact(T::ONE),
+        cd.div(wd).div(wd).add_t(T::ONE),
+    );
+    let v = cd.mul(num_dw).div(Dw::sum(T::ONE, c)).value();
+    nan_unless(ok, T::select(precise, v, plain).saturate())
+}
+
+/// Whether a white point is above 2^64, where L / w^2 (L <= 3 MAX_INPUT) is below 2^-98.
+#[inline]
+fn huge<T: Real>(white: T) -> T::Mask {
+    white.simd_gt(T::splat(18_446_744_073_709_551_616.0))
 }
 
 /// Reinhard on luminance: L' = L / (1 + L), colour scaled by L' / L, i.e. c / (1 + L)
 /// (Reinhard et al. 2002, applied to luminance as the paper does). Keeps hue; channels are
-/// clamped to 1 (a saturated colour can exceed it).
+/// clamped to 1 (a saturated colour can exceed it). 1 + L, with L from the BT.709 decimal
+/// weights, and the quotient are evaluated in double words of the lane type and rounded once
+/// (plain arithmetic reached 3.6 ulps).
 ///
 /// Peers: bevy `Tonemapping::ReinhardLuminance` is `reinhard_luminance(c)` (bevy divides
 /// 0 / 0 at black, which gives 0 here). three.js and Filament ship none.
@@ -85,8 +114,8 @@ pub fn reinhard_extended<T: Real>(c: T, white: T) -> T {
 #[must_use]
 pub fn reinhard_luminance<T: Real>(c: V3<T>) -> V3<T> {
     let c = sanitize_rgb(c);
-    let d = T::ONE + luminance(c);
-    saturate_rgb(per_channel(c, |x| x / d))
+    let d = luminance_dw(c).add_t(T::ONE);
+    saturate_rgb(per_channel(c, |x| Dw::exact(x).div(d).value()))
 }
 
 /// Extended Reinhard on luminance (Reinhard et al. 2002, eq. 4, applied to luminance):
@@ -95,6 +124,13 @@ pub fn reinhard_luminance<T: Real>(c: V3<T>) -> V3<T> {
 /// L = w. w in (0, MAX]; 0, negative, +inf and NaN give NaN (in every channel), as does a NaN
 /// channel. L / w^2 is formed as (L / w) / w, as in [`reinhard_extended`], and 1 + L / w^2
 /// is capped at the largest finite value, so a tiny white point keeps a zero channel at 0.
+///
+/// The scale (1 + L / w^2) / (1 + L) and its product with each channel are evaluated in
+/// double words of the lane type (about 48 bits for f32 lanes, 106 for f64), with L from the
+/// BT.709 decimal weights carried to that precision, and rounded once (plain arithmetic, about
+/// nine roundings, reached 5.1 ulps). Where 1 + L / w^2 exceeds 2^64 (a white point far below
+/// the luminance, whose channels then all but saturate) the plain form is used, so no double
+/// word overflows.
 ///
 /// Peers: none of three.js, Filament and bevy ships it.
 #[inline]
@@ -109,27 +145,61 @@ pub fn reinhard_extended_luminance<T: Real>(c: V3<T>, white: T) -> V3<T> {
     // channel stays 0; below the cap nothing changes.
     let num = (T::ONE + l / white / white).min(T::MAX);
     let den = T::ONE + l;
-    per_channel(c, |x| nan_unless(ok, (x * num / den).saturate()))
+    // Below 2^64 every double-word product stays far inside the range of f32 (channels are at
+    // most MAX_INPUT = 1e9); above it the plain form's lanes are selected, whatever the
+    // double words gave there.
+    let precise = num.simd_lt(T::splat(18_446_744_073_709_551_616.0));
+    let ld = luminance_dw(c);
+    // As in `reinhard_extended`: above w = 2^64 the term L / w^2 is negligible beside 1.
+    let wd = Dw::exact(T::select(huge(white), T::ONE, white));
+    let num_dw = Dw::select(
+        huge(white),
+        Dw::exact(T::ONE),
+        ld.div(wd).div(wd).add_t(T::ONE),
+    );
+    let scale = num_dw.div(ld.add_t(T::ONE));
+    per_channel(c, |x| {
+        let v = T::select(precise, Dw::exact(x).mul(scale).value(), x * num / den);
+        nan_unless(ok, v.saturate())
+    })
 }
 
 /// Reinhard-Jodie: per-channel Reinhard blended toward luminance Reinhard by the per-channel
 /// result itself, lerp(c / (1 + L), c / (1 + c), c / (1 + c)) (the variant popularised by
-/// user Jodie on Shadertoy, 2019; see Reinhard et al. 2002 for both parts). The lerp's
-/// 1 - t is formed as 1 / (1 + c), which it equals, without the cancellation of 1 - t for a
-/// bright channel.
+/// user Jodie on Shadertoy, 2019; see Reinhard et al. 2002 for both parts).
+///
+/// With t = c / (1 + c) and 1 - t = 1 / (1 + c) the lerp is one fraction,
+/// c (c (1 + L) + 1 + c) / ((1 + L) (1 + c)^2), all of whose terms are positive (no
+/// cancellation, and no 1 - t for a bright channel); it is evaluated in double words of the
+/// lane type (about 48 bits for f32 lanes, 106 for f64), with L from the BT.709 decimal
+/// weights carried to that precision, and rounded once (the plain lerp reached 4.6 ulps).
 ///
 /// Peers: none of three.js, Filament and bevy ships it.
 #[inline]
 #[must_use]
 pub fn reinhard_jodie<T: Real>(c: V3<T>) -> V3<T> {
     let c = sanitize_rgb(c);
-    let d = T::ONE + luminance(c);
+    let d = luminance_dw(c).add_t(T::ONE);
     let f = |x: T| {
-        let r = (T::ONE + x).recip();
-        let t = x * r;
-        (x / d).mul_add(r, t * t)
+        let xd = Dw::exact(x);
+        let x1 = Dw::sum(T::ONE, x);
+        let num = xd.mul(xd.mul(d).add(x1));
+        let den = d.mul(x1.sq());
+        num.div(den).value()
     };
     saturate_rgb(per_channel(c, f))
+}
+
+/// BT.709 luminance 0.2126 R + 0.7152 G + 0.0722 B in double words of the lane type, each
+/// decimal weight carried to that precision (as the nearest f64 plus the rest). For the
+/// operators' non-negative channels no term cancels; a NaN channel gives NaN.
+#[inline]
+fn luminance_dw<T: Real>(c: V3<T>) -> Dw<T> {
+    let k = |hi: f64, tail: f64| Dw::<T>::constant(hi, tail);
+    k(0.2126, -1.119_104_808_822_157_8e-17)
+        .mul(Dw::exact(c.x))
+        .add(k(0.7152, 5.311_306_949_806_749e-17).mul(Dw::exact(c.y)))
+        .add(k(0.0722, -2.886_579_864_025_407e-19).mul(Dw::exact(c.z)))
 }
 
 /// Narkowicz's fit of the ACES filmic curve (Narkowicz 2015, "ACES Filmic Tone Mapping
@@ -137,12 +207,10 @@ pub fn reinhard_jodie<T: Real>(c: V3<T>) -> V3<T> {
 /// RRT+ODT's brightening; Narkowicz scales input by 0.6 to match ACES' exposure (not applied
 /// here). f(0) = 0, f(1) = 0.8038.
 ///
-/// Evaluated with numerator and denominator divided by 0.14 (so the denominator's constant
-/// term is an exact 1, and each coefficient, a ratio of two decimals, is rounded once). Above
-/// x = 1 (f > 0.78) the fraction is its polynomial quotient minus the remainder,
-/// A - ((0.59 A - 0.03) x + 0.14 A) / (x (2.43 x + 0.59) + 0.14) with A = 2.51 / 2.43 carried
-/// in two parts: the remainder is under a quarter of the result there, so its roundings
-/// count a quarter.
+/// Evaluated in double words of the lane type (about 48 bits for f32 lanes, 106 for f64),
+/// with each decimal constant carried to that precision: numerator and denominator by
+/// Horner, their quotient, then one rounding, so the result is within a few hundredths of
+/// an ulp of correctly rounded (plain Horner and a division reached 3.8 ulps).
 ///
 /// Peers: Narkowicz's `ACESFilm(x)` is `aces_narkowicz(x)`, his ACES-exposure form
 /// `aces_narkowicz(0.6 * x)`. Filament's `FilmicToneMapper` is the same curve without the
@@ -153,23 +221,20 @@ pub fn reinhard_jodie<T: Real>(c: V3<T>) -> V3<T> {
 #[inline]
 #[must_use]
 pub fn aces_narkowicz<T: Real>(c: T) -> T {
-    let x = sanitize(c);
-    let s = |v: f64| T::splat(v);
-    // 2.43 / 0.14, 0.59 / 0.14, 2.51 / 0.14, 0.03 / 0.14 and (0.59 A - 0.03) / 0.14, each the
-    // nearest f64 to the exact ratio.
-    let den = x.mul_add(
-        x.mul_add(s(17.357_142_857_142_858), s(4.214_285_714_285_714)),
-        T::ONE,
-    );
-    let big = x.simd_gt(T::ONE);
-    let a = Dw::<T>::constant(1.032_921_810_699_588_5, -7.218_734_069_579_208e-17);
-    let num = T::select(
-        big,
-        x.mul_add(s(4.138_741_916_519_694), a.hi),
-        x * x.mul_add(s(17.928_571_428_571_427), s(0.214_285_714_285_714_27)),
-    );
-    let q = num / den;
-    T::select(big, (a.hi - q) + a.lo, q).saturate()
+    let x = Dw::exact(sanitize(c));
+    // Each decimal as its nearest f64 plus the rest (exact decimal minus that f64).
+    let k = |hi: f64, tail: f64| Dw::<T>::constant(hi, tail);
+    let num = k(2.51, 2.131_628_207_280_300_5e-16)
+        .mul(x)
+        .add(k(0.03, 1.110_223_024_625_156_6e-18))
+        .mul(x);
+    let den = k(2.43, -1.598_721_155_460_225_4e-16)
+        .mul(x)
+        .add(k(0.59, 3.108_624_468_950_438_4e-17))
+        .mul(x)
+        .add(k(0.14, -1.332_267_629_550_187_8e-17));
+    // The denominator is at least 0.14; a NaN input gives NaN through every part.
+    num.div(den).value().saturate()
 }
 
 /// The tails (exact decimal minus its nearest f64) of [`ACES_HILL_INPUT`]'s entries.
@@ -362,7 +427,7 @@ impl HableParams {
             "with the other parameters, F(W) > 0: (F - E) A W + B (F C - E) > 0",
         )?;
         require::<f64>(
-            p.folded(true).is_some() && p.folded(false).is_some(),
+            p.folded().is_some(),
             "white",
             "with the other parameters, the curve's coefficients finite in f64 and F(W) not \
              underflowing to 0 (every parameter in [1e-45, 1e61] suffices)",
@@ -387,45 +452,38 @@ impl HableParams {
     }
 
     /// The coefficients [P b^2, Q b, R b^2 K, S b K, T K] of F(b x) / K, K = F(W) (see
-    /// [`coefficients`](Self::coefficients)), in double-word f64 or, for `plain`, plain f64
-    /// (enough for f32 lanes), scaled by one power of two so the largest magnitude lies in
-    /// [0.5, 1). The scaling is exact and cancels in the quotient, so it changes no result,
+    /// [`coefficients`](Self::coefficients)), each as an f64 and its tail (the double word
+    /// rounded to f64 plus the rest), scaled by one power of two so the largest magnitude lies
+    /// in [0.5, 1). The scaling is exact and cancels in the quotient, so it changes no result,
     /// but keeps x^2 times a coefficient finite in f32 for parameters far from 1. `None`
     /// where a coefficient is not finite or K is not > 0 (the domain [`HableParams::new`]
     /// enforces).
-    fn folded(&self, plain: bool) -> Option<[f64; 5]> {
-        let (k, coef) = if plain {
-            let (a, b, c, d, e, f) = (self.a, self.b, self.c, self.d, self.e, self.f);
-            let (cp, cq, cr, cs, ct) = ((f - e) * a, b * (f * c - e), f * a, f * b, d * f * f);
-            let w = self.white;
-            let k = w * (cp * w + cq) / ((cr * w + cs) * w + ct);
-            let bias = self.exposure_bias;
-            let b2 = bias * bias;
-            (k, [cp * b2, cq * bias, cr * b2 * k, cs * bias * k, ct * k])
-        } else {
-            let k = self.curve_dw(Dw::exact(self.white));
-            let bias = Dw::exact(self.exposure_bias);
-            let [cp, cq, cr, cs, ct] = self.coefficients();
-            let b2 = bias.sq();
-            (
-                k.value(),
-                [
-                    cp.mul(b2),
-                    cq.mul(bias),
-                    cr.mul(b2).mul(k),
-                    cs.mul(bias).mul(k),
-                    ct.mul(k),
-                ]
-                .map(Dw::value),
-            )
-        };
-        let big = coef.iter().fold(0.0_f64, |m, v| m.max(v.abs()));
+    fn folded(&self) -> Option<[(f64, f64); 5]> {
+        let k = self.curve_dw(Dw::exact(self.white));
+        let bias = Dw::exact(self.exposure_bias);
+        let [cp, cq, cr, cs, ct] = self.coefficients();
+        let b2 = bias.sq();
+        let coef = [
+            cp.mul(b2),
+            cq.mul(bias),
+            cr.mul(b2).mul(k),
+            cs.mul(bias).mul(k),
+            ct.mul(k),
+        ]
+        .map(|c| {
+            let hi = c.value();
+            (hi, (c.hi - hi) + c.lo)
+        });
+        let k = k.value();
+        let big = coef.iter().fold(0.0_f64, |m, v| m.max(v.0.abs()));
         // `!(k > 0)` also rejects a NaN K.
-        if !(k > 0.0 && k.is_finite() && big.is_finite()) || coef.iter().any(|v| v.is_nan()) {
+        if !(k > 0.0 && k.is_finite() && big.is_finite())
+            || coef.iter().any(|v| v.0.is_nan() || v.1.is_nan())
+        {
             return None;
         }
         let (_, exp) = libm::frexp(big);
-        Some(coef.map(|v| libm::scalbn(v, -exp)))
+        Some(coef.map(|(hi, lo)| (libm::scalbn(hi, -exp), libm::scalbn(lo, -exp))))
     }
 
     /// F(x) in double-word f64 arithmetic, as one fraction (see [`hable`]).
@@ -467,7 +525,10 @@ impl HableParams {
 /// each term is about E / F); over one denominator the cancellation is exact:
 /// F(x) = x ((F - E) A x + B (F C - E)) / (F (x (A x + B) + D F)). The coefficients of
 /// F(bias c) / F(W), with the bias and 1 / F(W) folded in, are formed once per call in
-/// double-word f64 (plain f64 for f32 lanes) and rounded once each to the lane type.
+/// double-word f64; numerator, denominator and quotient are then evaluated in double words
+/// of the lane type (about 48 bits for f32 lanes, 106 for f64) and rounded once, so the
+/// result is within a few hundredths of an ulp of correctly rounded (plain Horner and a
+/// division, about nine roundings, reached 4.4 ulps near F = 1).
 ///
 /// Peers: Hable's post's shader (`texColor *= 16`, ExposureBias 2, W = 11.2, then
 /// pow(1/2.2)) is `gamma_encode(hable(16 * c, &HableParams::UNCHARTED2), 2.2)`: the 16 is a
@@ -476,28 +537,28 @@ impl HableParams {
 #[inline]
 #[must_use]
 pub fn hable<T: Real>(c: T, p: &HableParams) -> T {
-    // F(b x) / K = x (P b^2 x + Q b) / (K (R b^2 x^2 + S b x + T)); on f32 lanes plain f64
-    // coefficients are exact enough (their few f64 roundings are far below an f32 ulp).
-    let folded = if p.is_valid() {
-        p.folded(single::<T>())
-    } else {
-        None
-    };
-    let Some([np, nq, dr, ds, dt]) = folded.map(|k| k.map(T::splat)) else {
+    // F(b x) / K = x (P b^2 x + Q b) / (K (R b^2 x^2 + S b x + T)).
+    let folded = if p.is_valid() { p.folded() } else { None };
+    let Some([np, nq, dr, ds, dt]) = folded.map(|k| k.map(|(hi, lo)| Dw::<T>::constant(hi, lo)))
+    else {
         return T::splat(f64::NAN);
     };
     let x = sanitize(c);
-    let num = x * x.mul_add(np, nq);
-    let den = x.mul_add(x.mul_add(dr, ds), dt);
+    let xd = Dw::exact(x);
+    let num = np.mul(xd).add(nq).mul(xd);
+    let den = dr.mul(xd).add(ds).mul(xd).add(dt);
     // The denominator's coefficients are > 0 but can round to 0 on the lane type where they
     // are tiny beside the numerator's (parameters far from 1): a zero denominator is the
     // curve's limit, 1 for a positive numerator (num / 0 = inf, saturated) and 0 at x = 0,
     // where num / den would be 0 / 0. A NaN x still gives NaN (the comparisons fail).
-    let v = T::select(
-        den.simd_gt(T::ZERO),
-        num / den,
-        T::select(num.simd_gt(T::ZERO), T::ONE, T::ZERO),
-    );
+    let ok = den.hi.simd_gt(T::ZERO);
+    let safe = Dw::select(ok, den, Dw::exact(T::ONE));
+    // Where the quotient overflows (a denominator far below the numerator, from extreme
+    // parameters) the double-word division forms inf - inf; the plain quotient is inf there,
+    // which saturates to 1 like the curve.
+    let q = num.div(safe).value();
+    let q = T::select(q.is_nan(), num.hi / safe.hi, q);
+    let v = T::select(ok, q, T::select(num.hi.simd_gt(T::ZERO), T::ONE, T::ZERO));
     nan_where(x.is_nan(), v.saturate())
 }
 
@@ -660,8 +721,15 @@ pub fn lottes<T: Real>(c: T, p: &LottesParams) -> T {
     per_lane_f64(sanitize(c), |x| {
         // x^(a d) overflows for a large a d; b = 0 (a parameter, the same for every lane)
         // would then make inf * 0 = NaN of a term that is 0.
-        let xb = if b == 0.0 { 0.0 } else { libm::pow(x, ad) * b };
-        let v = libm::pow(x, a) / (xb + cc);
+        let xad = if b == 0.0 { 0.0 } else { libm::pow(x, ad) };
+        let xa = libm::pow(x, a);
+        // The product, sum and quotient in double words, rounded once: only the two powers'
+        // own errors remain. Where that is not finite (x^(a d) b overflowing for a large a d,
+        // a denominator of 0 at a pole of parameters with b < 0, or one so small that the
+        // quotient overflows), the plain form and its limit (+-inf, clamped).
+        let plain = xa / (xad * b + cc);
+        let v = Dw::exact(xa).div(Dw::product(xad, b).add_t(cc)).value();
+        let v = if v.is_finite() { v } else { plain };
         Real::saturate(v)
     })
 }
@@ -815,8 +883,10 @@ pub fn uchimura<T: Real>(c: T, p: &UchimuraParams) -> T {
 /// Evaluated without the specification's cancellations, each an identity: a channel minus
 /// the offset is (c - x) + 6.25 x^2 below 0.08 (the darkest channel's own c - x is 0, its
 /// result 6.25 x^2); p - p_n = (p - Ks)^2 / (p - Ks + d) with d = 1 - Ks; and the output
-/// mix(c p_n / p, p_n, 1 - g) is p_n (c / p + h) / (1 + h) with h = 0.15 (p - p_n), so no
-/// 1 - g is formed. Ks = 0.76 is carried in two parts, so p - Ks is exact near Ks.
+/// mix(c p_n / p, p_n, 1 - g) is (c + h p) p_n / (p (1 + h)) with h = 0.15 (p - p_n), so no
+/// 1 - g is formed. Every step runs in double words of the lane type (about 48 bits for f32
+/// lanes, 106 for f64) with the decimal constants carried to that precision, and each
+/// channel is rounded once (plain arithmetic, about twelve roundings, reached 5.3 ulps).
 ///
 /// Peers: the Khronos reference `pbrNeutral.glsl`, three.js `NeutralToneMapping` at exposure
 /// e as `pbr_neutral(e * c)`, and bevy `Tonemapping::PbrNeutral` are this function. Older
@@ -826,38 +896,36 @@ pub fn uchimura<T: Real>(c: T, p: &UchimuraParams) -> T {
 #[must_use]
 pub fn pbr_neutral<T: Real>(c: V3<T>) -> V3<T> {
     let c = sanitize_rgb(c);
-    let s = |v: f64| T::splat(v);
+    let k = |hi: f64, tail: f64| Dw::<T>::constant(hi, tail);
     let x = c.x.min(c.y).min(c.z);
-    let low = x.simd_lt(s(0.08));
-    let x2 = s(6.25) * x * x;
-    // Each channel minus the offset as a double word: exact c - x plus 6.25 x^2 below 0.08,
-    // c - 0.04 above (exact but for 0.04's own rounding, far below the result's last place).
+    let low = x.simd_lt(T::splat(0.08));
+    let x2 = Dw::exact(T::splat(6.25)).mul(Dw::square(x));
+    let offset_hi = k(0.04, -8.326_672_684_688_674e-19).neg();
+    // Each channel minus the offset: exact c - x plus 6.25 x^2 below 0.08, c - 0.04 above.
     let off = |v: T| {
-        let (d, e) = two_sum(v, -x);
-        let lo = Dw::sum(d, e + x2);
-        let hi = Dw::sum(v, -s(0.04));
+        let lo = Dw::sum(v, -x).add(x2);
+        let hi = Dw::exact(v).add(offset_hi);
         Dw::select(low, lo, hi)
     };
     let (cx, cy, cz) = (off(c.x), off(c.y), off(c.z));
-    let c = V3::new(cx.hi, cy.hi, cz.hi);
-    let peak = c.x.max(c.y).max(c.z);
-    let peak_lo = T::select(
-        peak.simd_eq(cx.hi),
-        cx.lo,
-        T::select(peak.simd_eq(cy.hi), cy.lo, cz.lo),
-    );
-    // Ks = 0.8 - 0.04 = 0.76 as hi + lo (0.76 = fl64(0.76) - 8.88e-18); peak - hi is exact
-    // (Sterbenz) near Ks, so e = p - Ks keeps the peak's low part.
-    let ks = Dw::<T>::constant(0.76, -8.881_784_197_001_253e-18);
-    let e = (peak - ks.hi) + (peak_lo - ks.lo);
-    let d = s(0.24);
-    let t = e + d;
-    let new_peak = T::ONE - s(0.0576) / t;
-    let h = s(0.15) * (e * e / t);
-    let safe_peak = T::select(peak.simd_gt(T::ZERO), peak, T::ONE);
-    let scaled = per_channel(c, |v| new_peak * (v / safe_peak + h) / (T::ONE + h));
-    let compress = e.simd_ge(T::ZERO);
-    let out = saturate_rgb(V3::select(compress, scaled, c));
+    let above = |a: Dw<T>, b: Dw<T>| a.hi.simd_gt(b.hi) | (a.hi.simd_eq(b.hi) & a.lo.simd_gt(b.lo));
+    let max = |a: Dw<T>, b: Dw<T>| Dw::select(above(a, b), a, b);
+    let peak = max(max(cx, cy), cz);
+    // e = p - Ks with Ks = 0.8 - 0.04 = 0.76, t = e + d with d = 1 - Ks = 0.24.
+    let e = peak.add(k(0.76, -8.881_784_197_001_253e-18).neg());
+    let t = e.add(k(0.24, 8.881_784_197_001_253e-18));
+    let new_peak = k(0.0576, 1.576_516_694_967_722_4e-18)
+        .div(t)
+        .neg()
+        .add_t(T::ONE);
+    let h = k(0.15, 5.551_115_123_125_783e-18).mul(e.sq().div(t));
+    // Out of the compression (p < Ks) these are not used; t, p and 1 + h are > 0 within it.
+    let factor = new_peak.div(peak.mul(h.add_t(T::ONE)));
+    let hp = h.mul(peak);
+    let scaled = |v: Dw<T>| v.add(hp).mul(factor).value();
+    let compress = e.hi.simd_ge(T::ZERO);
+    let channel = |v: Dw<T>| T::select(compress, scaled(v), v.value());
+    let out = saturate_rgb(V3::new(channel(cx), channel(cy), channel(cz)));
     // The offset and the peak mix the channels, but `min`/`max` ignore a NaN argument: without
     // this a NaN in one channel would leave the other two plausible.
     let bad = any_nan3(c);

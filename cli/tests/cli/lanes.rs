@@ -66,15 +66,12 @@ const POLYNOMIAL: &[(&str, u128)] = &[
     ("material::MetallicRoughness::sample_weighted", 96),
     // acos in EON's albedo, sin / cos in its samplers.
     ("diffuse::eon", 8),
-    ("diffuse::eon_albedo", 2),
-    ("diffuse::eon_fon_albedo", 2),
     ("diffuse::eon_cltc_sample", 16),
     ("diffuse::eon_sample", 8),
     ("diffuse::Eon::eval", 2),
     ("diffuse::Eon::albedo", 2),
     ("diffuse::Eon::sample", 12),
     // asin and acos of the full Oren-Nayar model.
-    ("diffuse::OrenNayarFull::eval", 4),
     // cos of the spot cone's angles.
     ("lights::SpotCone::eval", 64),
     // exp2 (Karis's spherical-Gaussian Schlick), expm1 / exp (exposure), log2 (UE4 mips).
@@ -157,24 +154,6 @@ const KNOWN: &[Known] = &[
             ],
         ),
         covers: |r| r[0] > 1e30 || r[1] > 1e30 || r[5] >= 0.999,
-    },
-    Known {
-        path: "diffuse::eon",
-        why: "with a subnormal n_dot_l (and n_dot_v near 1, v_dot_l near -1) f is about 2e-8, \
-              and the lane acos changes it by 40% (1.4732756e-8 on f32x8, 2.4579220e-8 on f32): \
-              an absolute error of 1e-8, but 5.6 million ULP; in f64 at grazing cosines (n.v and \
-              n.l of 1e-4, v.l near -1) the lane acos moves f by up to 2.2e4 ULP (5e-12 relative)",
-        example: (
-            Float::F32,
-            &[
-                0.9999999403953552,
-                1.401298464324817e-45,
-                -0.9999999403953552,
-                0.9999999403953552,
-                1.0,
-            ],
-        ),
-        covers: |r| r[0] <= 1.0001e-4 || r[1] <= 1.0001e-4,
     },
 ];
 
