@@ -9,6 +9,8 @@
 //!
 //! Ill-conditioned rows score `raw - kappa / 2` (the raw error in ULPs less what one rounding
 //! of the input explains, `crate::harness`), so their bound reads "raw <= kappa / 2 + bound".
+//! Their score approaches -3.5 for any kernel that rounds its result (half an ulp at kappa
+//! just above 8), so their bounds are made from a score of at least -3.55: -3.4 at the lowest.
 //!
 //! A build with FMA (`-C target-feature=+fma`, where `mul_add` fuses) rounds differently; a
 //! row whose FMA figures differ carries them in [`Bound::fma`], and [`bound`] returns the
@@ -182,18 +184,18 @@ pub const BOUNDS: &[Bound] = &[
     b("tonemap::agx_minimal", 0.7, 0.7, 0.7, 0.7),
     b(
         "tonemap::agx_minimal (ill-conditioned)",
-        -3.9,
-        -3.9,
-        -3.9,
-        -3.9,
+        -3.4,
+        -3.4,
+        -3.4,
+        -3.4,
     ),
     b("tonemap::agx_minimal golden", 0.7, 0.7, 0.7, 0.7),
     b(
         "tonemap::agx_minimal golden (ill-conditioned)",
-        -3.7,
-        -3.6,
-        -3.7,
-        -3.6,
+        -3.4,
+        -3.4,
+        -3.4,
+        -3.4,
     ),
     b("tonemap::agx_minimal punchy", 0.7, 0.8, 0.7, 0.8),
     b(
@@ -222,10 +224,10 @@ pub const BOUNDS: &[Bound] = &[
     b("tonemap::agx_filament golden", 0.7, 0.8, 0.7, 0.8),
     b(
         "tonemap::agx_filament golden (ill-conditioned)",
-        -3.5,
-        -3.4,
-        -3.5,
-        -3.4,
+        -3.3,
+        -3.3,
+        -3.3,
+        -3.3,
     ),
     b("tonemap::agx_filament punchy", 0.7, 0.7, 0.7, 0.7),
     b(

@@ -219,6 +219,9 @@ pub fn suggested_bound(max_ulp: f64) -> f64 {
     }
 }
 
+/// The lowest score an ill-conditioned row's bound is made from ([`suggested_bounds`]).
+pub const ILL_FLOOR: f64 = -3.55;
+
 /// The [`bounds::BOUNDS`] rows these measurements suggest, as Rust source (printed by the
 /// table test so retuning is a paste). In an FMA build, the `.fma(...)` figures.
 #[must_use]
@@ -226,7 +229,17 @@ pub fn suggested_bounds(rows: &[(Case, Measurement)]) -> String {
     let mut s = String::new();
     for (case, m) in rows {
         let cur = bounds::bound(case.name);
-        let f = |st: &Stats| suggested_bound(st.max_ulp);
+        // An ill-conditioned row's score approaches 0.5 - 8 / 2 = -3.5 for any kernel that
+        // rounds its result (half an ulp where kappa is just above 8), so a lower figure only
+        // says the search drew no such point: its bound is at least that of -3.55 (-3.4).
+        let ill = case.name.ends_with(ILL_CONDITIONED);
+        let f = |st: &Stats| {
+            suggested_bound(if ill {
+                st.max_ulp.max(ILL_FLOOR)
+            } else {
+                st.max_ulp
+            })
+        };
         s.push_str(&format!(
             "    b(\"{}\", {:.1}, {:.1}, {:.1}, {:.1}){},{}\n",
             case.name,

@@ -420,7 +420,7 @@ pub fn all() -> Vec<Case> {
 
 /// AgX's colours, fewer than [`colours`] (each reference takes a log2 and two powers per
 /// channel): greys and single-channel colours at every stiff value, a coarser grid of mixed
-/// colours, and 300 random colours; each measured on every channel.
+/// colours, and 300 random colours (more in a deep run); each measured on every channel.
 fn agx_points(ty: Ty) -> Vec<Vec<f64>> {
     let mut c = Vec::new();
     for v in values(ty) {
@@ -435,7 +435,8 @@ fn agx_points(ty: Ty) -> Vec<Vec<f64>> {
         }
     }
     let mut g = Rng::fresh("tonemap::agx");
-    for _ in 0..300 {
+    // 300 random colours in an ordinary run; a deep one (10^5 points) draws 3333.
+    for _ in 0..(crate::points::random_points() / 30).max(300) {
         c.push([0, 1, 2].map(|_| {
             if g.uniform() < 0.1 {
                 0.0
