@@ -55,6 +55,7 @@
 //! `time <kernel> <milliseconds>`. With `BRDF_THROUGHPUT_OUTPUT=<dir>` it also writes each
 //! kernel's outputs there as raw `f32` (`<kernel>.f32`), for the script to compare values.
 
+use brdf::Cosines;
 use brdf::wide::{f32x8, f64x4};
 use brdf::{Real, V3, batch, beckmann, cook_torrance, diffuse, fresnel, ggx, material};
 use criterion::{BenchmarkId, Criterion, SamplingMode, Throughput, criterion_group};
@@ -95,7 +96,16 @@ fn beckmann_d_fast<T: Real>([nh]: [T; 1]) -> [T; 1] {
 #[inline]
 fn rough_conductor<T: Real>([nh, nv, nl, vh]: [T; 4]) -> [T; 1] {
     let f = fresnel::conductor(vh, T::splat(ETA), T::splat(K));
-    [cook_torrance::ggx(nh, nv, nl, T::splat(ALPHA), f) * nl.saturate()]
+    [cook_torrance::ggx(
+        Cosines {
+            n_dot_v: nv,
+            n_dot_l: nl,
+            n_dot_h: nh,
+            v_dot_h: vh,
+        },
+        T::splat(ALPHA),
+        f,
+    ) * nl.saturate()]
 }
 
 /// The rough conductor of [`rough_conductor`] with the working-precision D and F:
@@ -121,7 +131,16 @@ fn fast_term<T: Real>(nh: T, nv: T, nl: T, a: T, f: T) -> T {
 #[inline]
 fn ggx_lambert<T: Real>([nh, nv, nl, vh]: [T; 4]) -> [T; 1] {
     let a = T::splat(ALPHA);
-    let spec = cook_torrance::ggx(nh, nv, nl, a, fresnel::schlick(T::splat(F0), vh));
+    let spec = cook_torrance::ggx(
+        Cosines {
+            n_dot_v: nv,
+            n_dot_l: nl,
+            n_dot_h: nh,
+            v_dot_h: vh,
+        },
+        a,
+        fresnel::schlick(T::splat(F0), vh),
+    );
     [spec + diffuse::lambert(nv, nl, T::splat(RHO))]
 }
 
@@ -129,7 +148,17 @@ fn ggx_lambert<T: Real>([nh, nv, nl, vh]: [T; 4]) -> [T; 1] {
 #[inline]
 fn material_gltf<T: Real>([nh, nv, nl, vh]: [T; 4]) -> [T; 3] {
     let base = V3::new(T::splat(0.9), T::splat(0.6), T::splat(0.3));
-    let f = material::gltf(nv, nl, nh, vh, base, T::splat(0.5), T::splat(0.5));
+    let f = material::gltf(
+        Cosines {
+            n_dot_v: nv,
+            n_dot_l: nl,
+            n_dot_h: nh,
+            v_dot_h: vh,
+        },
+        base,
+        T::splat(0.5),
+        T::splat(0.5),
+    );
     [f.x, f.y, f.z]
 }
 
@@ -439,7 +468,16 @@ fn timing_mode(path: &str) -> Result<(), String> {
                     let h = s * s.length().recip();
                     let vh = v.dot(h);
                     let f = fresnel::conductor(vh, eta, k);
-                    [cook_torrance::ggx(h.z, vz, lz, alpha, f) * lz.saturate()]
+                    [cook_torrance::ggx(
+                        Cosines {
+                            n_dot_v: vz,
+                            n_dot_l: lz,
+                            n_dot_h: h.z,
+                            v_dot_h: vh,
+                        },
+                        alpha,
+                        f,
+                    ) * lz.saturate()]
                 });
             }),
         ),

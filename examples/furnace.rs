@@ -14,6 +14,7 @@
 //! own error estimate. Every figure is printed; the run exits non-zero if one fails.
 //!
 //! `cargo run --release --example furnace`
+use brdf::Cosines;
 use brdf::glam::DVec3;
 use brdf::integrate::{Estimate, directional_albedo};
 use brdf::material::MetallicRoughness;
@@ -85,8 +86,7 @@ fn compare(label: &str, mc: &Mean, reference: Estimate) -> bool {
 
 /// GGX Cook-Torrance with F = 1 from the dot-product entry point.
 fn ggx_f1(alpha: f64, wo: V3<f64>, wi: V3<f64>) -> f64 {
-    let h = (wo + wi).normalize_or(V3::unit_z());
-    cook_torrance::ggx(h.z, wo.z, wi.z, alpha, 1.0)
+    cook_torrance::ggx(Cosines::from_local(wo, wi), alpha, 1.0)
 }
 
 fn main() -> ExitCode {

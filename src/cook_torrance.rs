@@ -21,8 +21,10 @@
 
 use crate::domain::{above_horizon, nan_where};
 use crate::fresnel;
+use crate::fresnel::ComplexIor;
 use crate::microfacet::Microfacet;
 use crate::real::Real;
+use crate::shading::Cosines;
 use crate::vec3::V3;
 use crate::vec3::any_nan3;
 
@@ -131,7 +133,8 @@ pub fn eval_rgb<T: Real, M: Microfacet<T> + ?Sized>(
 
 /// Dot-product entry point of isotropic GGX Cook-Torrance: f = D(n.h) V(n.v, n.l) F, with
 /// [`crate::ggx::d`] and [`crate::ggx::v_correlated`], F given by the caller (the shader
-/// form: `D_GGX * V_SmithGGXCorrelated * F`).
+/// form: `D_GGX * V_SmithGGXCorrelated * F`). `c` is the shading point's [`Cosines`]; F is
+/// given, so its v.h only passes a NaN on (the F the caller formed from it).
 ///
 /// Domain: cosines in [-1, 1] (clamped to [0, 1]; 0 where n.l <= 0 or n.v <= 0), alpha in
 /// [0, +inf) finite (clamped to [ALPHA_MIN, ALPHA_MAX]), F >= 0. NaN for NaN in any input,
@@ -140,17 +143,17 @@ pub fn eval_rgb<T: Real, M: Microfacet<T> + ?Sized>(
 #[cfg(feature = "ggx")]
 #[inline]
 #[must_use]
-pub fn ggx<T: Real>(n_dot_h: T, n_dot_v: T, n_dot_l: T, alpha: T, fresnel: T) -> T {
-    let dv = ggx_dv(n_dot_h, n_dot_v, n_dot_l, alpha);
-    assemble(dv, n_dot_h, n_dot_v, n_dot_l, alpha, fresnel)
+pub fn ggx<T: Real>(c: Cosines<T>, alpha: T, fresnel: T) -> T {
+    let dv = ggx_dv(c, alpha);
+    assemble(dv, c, alpha, fresnel)
 }
 
 /// D V of the isotropic GGX (uncapped; [`assemble`] caps it): shared by [`ggx`] and its
 /// Fresnel-specific forms so that they agree bit for bit.
 #[cfg(feature = "ggx")]
 #[inline]
-fn ggx_dv<T: Real>(n_dot_h: T, n_dot_v: T, n_dot_l: T, alpha: T) -> T {
-    crate::ggx::d(n_dot_h, alpha) * crate::ggx::v_correlated(n_dot_v, n_dot_l, alpha)
+fn ggx_dv<T: Real>(c: Cosines<T>, alpha: T) -> T {
+    crate::ggx::d(c.n_dot_h, alpha) * crate::ggx::v_correlated(c.n_dot_v, c.n_dot_l, alpha)
 }
 
 /// (D V capped at MAX) F capped at MAX, 0 below the horizon, NaN for NaN input, alpha outside
@@ -158,11 +161,14 @@ fn ggx_dv<T: Real>(n_dot_h: T, n_dot_v: T, n_dot_l: T, alpha: T) -> T {
 /// multiplication by F keeps a zero F from meeting an infinite D V (0 inf = NaN).
 #[cfg(any(feature = "ggx", feature = "beckmann"))]
 #[inline]
-fn assemble<T: Real>(dv: T, n_dot_h: T, n_dot_v: T, n_dot_l: T, alpha: T, fresnel: T) -> T {
+fn assemble<T: Real>(dv: T, c: Cosines<T>, alpha: T, fresnel: T) -> T {
     let value = (dv.min(T::MAX) * fresnel).min(T::MAX);
-    let value = above_horizon(n_dot_v, n_dot_l, value);
+    let value = above_horizon(c.n_dot_v, c.n_dot_l, value);
     let ok = crate::microfacet::alpha_ok(alpha) & fresnel.simd_ge(T::ZERO);
-    crate::domain::nan_unless(ok, nan_where(n_dot_h.is_nan(), value))
+    crate::domain::nan_unless(
+        ok,
+        nan_where(c.n_dot_h.is_nan() | c.v_dot_h.is_nan(), value),
+    )
 }
 
 /// Dot-product entry point of isotropic Beckmann Cook-Torrance with the height-correlated
@@ -172,20 +178,20 @@ fn assemble<T: Real>(dv: T, n_dot_h: T, n_dot_v: T, n_dot_l: T, alpha: T, fresne
 #[cfg(feature = "beckmann")]
 #[inline]
 #[must_use]
-pub fn beckmann<T: Real>(n_dot_h: T, n_dot_v: T, n_dot_l: T, alpha: T, fresnel: T) -> T {
-    let dv = beckmann_dv(n_dot_h, n_dot_v, n_dot_l, alpha);
-    assemble(dv, n_dot_h, n_dot_v, n_dot_l, alpha, fresnel)
+pub fn beckmann<T: Real>(c: Cosines<T>, alpha: T, fresnel: T) -> T {
+    let dv = beckmann_dv(c, alpha);
+    assemble(dv, c, alpha, fresnel)
 }
 
 /// D V of the isotropic Beckmann (uncapped; [`assemble`] caps it): shared by [`beckmann`] and
 /// its Fresnel-specific forms so that they agree bit for bit.
 #[cfg(feature = "beckmann")]
 #[inline]
-fn beckmann_dv<T: Real>(n_dot_h: T, n_dot_v: T, n_dot_l: T, alpha: T) -> T {
-    let (cv, cl) = (n_dot_v.saturate(), n_dot_l.saturate());
+fn beckmann_dv<T: Real>(c: Cosines<T>, alpha: T) -> T {
+    let (cv, cl) = (c.n_dot_v.saturate(), c.n_dot_l.saturate());
     let dist = crate::beckmann::Beckmann::new_unchecked(alpha, alpha);
     let (wv, wl) = (cosine_direction(cv), cosine_direction(cl));
-    crate::beckmann::d(n_dot_h, alpha) * dist.v_correlated(wv, wl)
+    crate::beckmann::d(c.n_dot_h, alpha) * dist.v_correlated(wv, wl)
 }
 
 /// A unit direction with cos(theta) = c in the xz plane (isotropic terms depend on c only).
@@ -199,8 +205,8 @@ fn cosine_direction<T: Real>(c: T) -> V3<T> {
 /// same D V, so each channel equals the scalar entry point with that channel's F bit for bit.
 #[cfg(any(feature = "ggx", feature = "beckmann"))]
 #[inline]
-fn assemble_rgb<T: Real>(dv: T, n_dot_h: T, n_dot_v: T, n_dot_l: T, alpha: T, f: V3<T>) -> V3<T> {
-    let ch = |f: T| assemble(dv, n_dot_h, n_dot_v, n_dot_l, alpha, f);
+fn assemble_rgb<T: Real>(dv: T, c: Cosines<T>, alpha: T, f: V3<T>) -> V3<T> {
+    let ch = |f: T| assemble(dv, c, alpha, f);
     V3::new(ch(f.x), ch(f.y), ch(f.z))
 }
 
@@ -208,13 +214,14 @@ fn assemble_rgb<T: Real>(dv: T, n_dot_h: T, n_dot_v: T, n_dot_l: T, alpha: T, f:
 /// f_c = D(n.h) V(n.v, n.l) F_c with the exact conductor Fresnel
 /// F_c = [`fresnel::conductor`](v.h, eta_c, k_c) of the complex IOR eta_c + i k_c.
 ///
-/// Each channel equals [`ggx`]`(n_dot_h, n_dot_v, n_dot_l, alpha,
-/// fresnel::conductor(v_dot_h, eta.c, k.c))` bit for bit; D V is evaluated once. The
+/// Each channel equals [`ggx`]`(c, alpha, fresnel::conductor(c.v_dot_h, ior.eta.c, ior.k.c))`
+/// bit for bit; D V is evaluated once. The
 /// direction-vector form is [`eval_rgb`] with [`fresnel::conductor_rgb`].
 ///
 /// Domain: cosines in [-1, 1]; n.v and n.l clamped to [0, 1] (0 where either is <= 0); v.h
 /// clamped to [0, 1] (for a reflection v.h = |v + l| / 2 >= 0); alpha in [0, +inf) finite,
-/// clamped to [ALPHA_MIN, ALPHA_MAX]; per channel eta in (0, MAX] and k in [0, MAX]. NaN for a
+/// clamped to [ALPHA_MIN, ALPHA_MAX]; per channel eta in (0, MAX] and k in [0, MAX] (`ior`, named so
+/// the two cannot be swapped). NaN for a
 /// NaN input or alpha < 0 or +inf (every channel), and in a channel whose eta or k is outside
 /// its domain. Never inf: D V and D V F are capped at the largest finite value.
 ///
@@ -225,30 +232,24 @@ fn assemble_rgb<T: Real>(dv: T, n_dot_h: T, n_dot_v: T, n_dot_l: T, alpha: T, f:
 /// Optics", section 14.2 (reflection at a conducting surface).
 ///
 /// ```
-/// use brdf::{V3, cook_torrance};
+/// use brdf::fresnel::ComplexIor;
+/// use brdf::{Cosines, V3, cook_torrance};
 /// // A gold-like conductor: red and green reflect more than blue.
-/// let (eta, k) = (V3::new(0.18, 0.42, 1.37), V3::new(3.42, 2.35, 1.77));
-/// let f = cook_torrance::ggx_conductor_rgb(0.95, 0.8, 0.7, 0.9, 0.3, eta, k);
+/// let gold = ComplexIor { eta: V3::new(0.18, 0.42, 1.37), k: V3::new(3.42, 2.35, 1.77) };
+/// let c = Cosines { n_dot_v: 0.8, n_dot_l: 0.7, n_dot_h: 0.95, v_dot_h: 0.9 };
+/// let f = cook_torrance::ggx_conductor_rgb(c, 0.3, gold);
 /// assert!(f.x > f.z && f.y > f.z && f.z > 0.0);
 /// // Below the horizon: nothing.
-/// let dark = cook_torrance::ggx_conductor_rgb(0.95, 0.8, -0.1, 0.9, 0.3, eta, k);
+/// let dark = cook_torrance::ggx_conductor_rgb(Cosines { n_dot_l: -0.1, ..c }, 0.3, gold);
 /// assert_eq!(dark, V3::splat(0.0));
 /// ```
 #[cfg(feature = "ggx")]
 #[inline]
 #[must_use]
-pub fn ggx_conductor_rgb<T: Real>(
-    n_dot_h: T,
-    n_dot_v: T,
-    n_dot_l: T,
-    v_dot_h: T,
-    alpha: T,
-    eta: V3<T>,
-    k: V3<T>,
-) -> V3<T> {
-    let f = fresnel::conductor_rgb(v_dot_h.saturate(), eta, k);
-    let dv = ggx_dv(n_dot_h, n_dot_v, n_dot_l, alpha);
-    assemble_rgb(dv, n_dot_h, n_dot_v, n_dot_l, alpha, f)
+pub fn ggx_conductor_rgb<T: Real>(c: Cosines<T>, alpha: T, ior: ComplexIor<V3<T>>) -> V3<T> {
+    let f = fresnel::conductor_rgb(c.v_dot_h.saturate(), ior.eta, ior.k);
+    let dv = ggx_dv(c, alpha);
+    assemble_rgb(dv, c, alpha, f)
 }
 
 /// Isotropic GGX with Schlick's Fresnel of an RGB F0, the glTF 2.0 / Filament / Unreal
@@ -256,8 +257,7 @@ pub fn ggx_conductor_rgb<T: Real>(
 /// ([`fresnel::schlick_rgb`]). For glTF's metallic-roughness model F0 = lerp(0.04,
 /// base_color, metallic) and alpha = roughness^2.
 ///
-/// Each channel equals [`ggx`]`(n_dot_h, n_dot_v, n_dot_l, alpha, fresnel::schlick(f0.c,
-/// v_dot_h))` bit for bit. Domain and edges as [`ggx_conductor_rgb`], with F0 in [0, 1] per
+/// Each channel equals [`ggx`]`(c, alpha, fresnel::schlick(f0.c, c.v_dot_h))` bit for bit. Domain and edges as [`ggx_conductor_rgb`], with F0 in [0, 1] per
 /// channel (outside, and NaN, give NaN in that channel).
 ///
 /// Sources: as [`ggx_conductor_rgb`], with Schlick 1994, "An Inexpensive BRDF Model for
@@ -265,9 +265,10 @@ pub fn ggx_conductor_rgb<T: Real>(
 /// `D_GGX * V_SmithGGXCorrelated * F_Schlick`.
 ///
 /// ```
-/// use brdf::{V3, cook_torrance};
+/// use brdf::{Cosines, V3, cook_torrance};
 /// let f0 = V3::new(0.04, 0.04, 0.04); // a glTF dielectric base
-/// let f = cook_torrance::ggx_schlick_rgb(1.0, 1.0, 1.0, 1.0, 0.5, f0);
+/// let normal = Cosines { n_dot_v: 1.0, n_dot_l: 1.0, n_dot_h: 1.0, v_dot_h: 1.0 };
+/// let f = cook_torrance::ggx_schlick_rgb(normal, 0.5, f0);
 /// // At normal incidence on a mirror-aligned facet: D(1) = 1 / (pi alpha^2), V = 1 / 4, F = F0.
 /// let expected = 0.04 / (core::f64::consts::PI * 0.25) / 4.0;
 /// assert!((f.x - expected).abs() < 1e-15);
@@ -275,17 +276,10 @@ pub fn ggx_conductor_rgb<T: Real>(
 #[cfg(feature = "ggx")]
 #[inline]
 #[must_use]
-pub fn ggx_schlick_rgb<T: Real>(
-    n_dot_h: T,
-    n_dot_v: T,
-    n_dot_l: T,
-    v_dot_h: T,
-    alpha: T,
-    f0: V3<T>,
-) -> V3<T> {
-    let f = fresnel::schlick_rgb(f0, v_dot_h.saturate());
-    let dv = ggx_dv(n_dot_h, n_dot_v, n_dot_l, alpha);
-    assemble_rgb(dv, n_dot_h, n_dot_v, n_dot_l, alpha, f)
+pub fn ggx_schlick_rgb<T: Real>(c: Cosines<T>, alpha: T, f0: V3<T>) -> V3<T> {
+    let f = fresnel::schlick_rgb(f0, c.v_dot_h.saturate());
+    let dv = ggx_dv(c, alpha);
+    assemble_rgb(dv, c, alpha, f)
 }
 
 /// Rough dielectric reflection (the specular layer of plastic, glass, water), isotropic GGX:
@@ -294,8 +288,7 @@ pub fn ggx_schlick_rgb<T: Real>(
 /// eta < 1 (the view inside the denser medium) gives total internal reflection, F = 1, past
 /// the critical angle.
 ///
-/// Equals [`ggx`]`(n_dot_h, n_dot_v, n_dot_l, alpha, fresnel::dielectric(v_dot_h, eta))` bit
-/// for bit for v.h in [0, 1]. Domain and edges as [`ggx_conductor_rgb`], with eta in (0, MAX]
+/// Equals [`ggx`]`(c, alpha, fresnel::dielectric(c.v_dot_h, eta))` bit for bit for v.h in [0, 1]. Domain and edges as [`ggx_conductor_rgb`], with eta in (0, MAX]
 /// (eta <= 0, +inf and NaN give NaN). v.h is clamped to [0, 1] before the Fresnel term, so a
 /// rounding-negative v.h never selects [`fresnel::dielectric`]'s "light from the other side"
 /// branch.
@@ -308,26 +301,20 @@ pub fn ggx_schlick_rgb<T: Real>(
 /// "Principles of Optics", section 1.5.
 ///
 /// ```
-/// use brdf::cook_torrance;
+/// use brdf::{Cosines, cook_torrance};
 /// // Glass (eta = 1.5) at normal incidence: F = ((eta - 1) / (eta + 1))^2 = 0.04.
-/// let f = cook_torrance::ggx_dielectric(1.0, 1.0, 1.0, 1.0, 0.5, 1.5);
+/// let normal = Cosines { n_dot_v: 1.0, n_dot_l: 1.0, n_dot_h: 1.0, v_dot_h: 1.0 };
+/// let f = cook_torrance::ggx_dielectric(normal, 0.5, 1.5);
 /// let expected = 0.04 / (core::f64::consts::PI * 0.25) / 4.0;
 /// assert!((f - expected).abs() < 1e-15);
 /// ```
 #[cfg(feature = "ggx")]
 #[inline]
 #[must_use]
-pub fn ggx_dielectric<T: Real>(
-    n_dot_h: T,
-    n_dot_v: T,
-    n_dot_l: T,
-    v_dot_h: T,
-    alpha: T,
-    eta: T,
-) -> T {
-    let f = fresnel::dielectric(v_dot_h.saturate(), eta);
-    let dv = ggx_dv(n_dot_h, n_dot_v, n_dot_l, alpha);
-    assemble(dv, n_dot_h, n_dot_v, n_dot_l, alpha, f)
+pub fn ggx_dielectric<T: Real>(c: Cosines<T>, alpha: T, eta: T) -> T {
+    let f = fresnel::dielectric(c.v_dot_h.saturate(), eta);
+    let dv = ggx_dv(c, alpha);
+    assemble(dv, c, alpha, f)
 }
 
 /// `ggx_conductor_rgb` with the Beckmann NDF and its height-correlated Smith G2 (the D V
@@ -342,26 +329,20 @@ pub fn ggx_dielectric<T: Real>(
 /// 2007, eq. 25) and Walter et al. 2007, eq. 27, for its Smith Lambda.
 ///
 /// ```
-/// use brdf::{V3, cook_torrance};
-/// let (eta, k) = (V3::new(0.18, 0.42, 1.37), V3::new(3.42, 2.35, 1.77));
-/// let f = cook_torrance::beckmann_conductor_rgb(0.95, 0.8, 0.7, 0.9, 0.3, eta, k);
+/// use brdf::fresnel::ComplexIor;
+/// use brdf::{Cosines, V3, cook_torrance};
+/// let gold = ComplexIor { eta: V3::new(0.18, 0.42, 1.37), k: V3::new(3.42, 2.35, 1.77) };
+/// let c = Cosines { n_dot_v: 0.8, n_dot_l: 0.7, n_dot_h: 0.95, v_dot_h: 0.9 };
+/// let f = cook_torrance::beckmann_conductor_rgb(c, 0.3, gold);
 /// assert!(f.x > f.z && f.z > 0.0);
 /// ```
 #[cfg(feature = "beckmann")]
 #[inline]
 #[must_use]
-pub fn beckmann_conductor_rgb<T: Real>(
-    n_dot_h: T,
-    n_dot_v: T,
-    n_dot_l: T,
-    v_dot_h: T,
-    alpha: T,
-    eta: V3<T>,
-    k: V3<T>,
-) -> V3<T> {
-    let f = fresnel::conductor_rgb(v_dot_h.saturate(), eta, k);
-    let dv = beckmann_dv(n_dot_h, n_dot_v, n_dot_l, alpha);
-    assemble_rgb(dv, n_dot_h, n_dot_v, n_dot_l, alpha, f)
+pub fn beckmann_conductor_rgb<T: Real>(c: Cosines<T>, alpha: T, ior: ComplexIor<V3<T>>) -> V3<T> {
+    let f = fresnel::conductor_rgb(c.v_dot_h.saturate(), ior.eta, ior.k);
+    let dv = beckmann_dv(c, alpha);
+    assemble_rgb(dv, c, alpha, f)
 }
 
 /// `ggx_schlick_rgb` with the Beckmann D V of [`beckmann`]: per channel
@@ -370,24 +351,18 @@ pub fn beckmann_conductor_rgb<T: Real>(
 /// sources as `ggx_schlick_rgb` and [`beckmann_conductor_rgb`].
 ///
 /// ```
-/// use brdf::{V3, cook_torrance};
-/// let f = cook_torrance::beckmann_schlick_rgb(0.95, 0.8, 0.7, 0.9, 0.3, V3::splat(0.04));
+/// use brdf::{Cosines, V3, cook_torrance};
+/// let c = Cosines { n_dot_v: 0.8, n_dot_l: 0.7, n_dot_h: 0.95, v_dot_h: 0.9 };
+/// let f = cook_torrance::beckmann_schlick_rgb(c, 0.3, V3::splat(0.04));
 /// assert!(f.x > 0.0 && f.x == f.z);
 /// ```
 #[cfg(feature = "beckmann")]
 #[inline]
 #[must_use]
-pub fn beckmann_schlick_rgb<T: Real>(
-    n_dot_h: T,
-    n_dot_v: T,
-    n_dot_l: T,
-    v_dot_h: T,
-    alpha: T,
-    f0: V3<T>,
-) -> V3<T> {
-    let f = fresnel::schlick_rgb(f0, v_dot_h.saturate());
-    let dv = beckmann_dv(n_dot_h, n_dot_v, n_dot_l, alpha);
-    assemble_rgb(dv, n_dot_h, n_dot_v, n_dot_l, alpha, f)
+pub fn beckmann_schlick_rgb<T: Real>(c: Cosines<T>, alpha: T, f0: V3<T>) -> V3<T> {
+    let f = fresnel::schlick_rgb(f0, c.v_dot_h.saturate());
+    let dv = beckmann_dv(c, alpha);
+    assemble_rgb(dv, c, alpha, f)
 }
 
 /// `ggx_dielectric` with the Beckmann D V of [`beckmann`]:
@@ -396,22 +371,16 @@ pub fn beckmann_schlick_rgb<T: Real>(
 /// and sources as `ggx_dielectric` and [`beckmann_conductor_rgb`].
 ///
 /// ```
-/// use brdf::cook_torrance;
-/// let f: f64 = cook_torrance::beckmann_dielectric(0.95, 0.8, 0.7, 0.9, 0.3, 1.5);
+/// use brdf::{Cosines, cook_torrance};
+/// let c = Cosines { n_dot_v: 0.8, n_dot_l: 0.7, n_dot_h: 0.95, v_dot_h: 0.9 };
+/// let f: f64 = cook_torrance::beckmann_dielectric(c, 0.3, 1.5);
 /// assert!(f > 0.0 && f.is_finite());
 /// ```
 #[cfg(feature = "beckmann")]
 #[inline]
 #[must_use]
-pub fn beckmann_dielectric<T: Real>(
-    n_dot_h: T,
-    n_dot_v: T,
-    n_dot_l: T,
-    v_dot_h: T,
-    alpha: T,
-    eta: T,
-) -> T {
-    let f = fresnel::dielectric(v_dot_h.saturate(), eta);
-    let dv = beckmann_dv(n_dot_h, n_dot_v, n_dot_l, alpha);
-    assemble(dv, n_dot_h, n_dot_v, n_dot_l, alpha, f)
+pub fn beckmann_dielectric<T: Real>(c: Cosines<T>, alpha: T, eta: T) -> T {
+    let f = fresnel::dielectric(c.v_dot_h.saturate(), eta);
+    let dv = beckmann_dv(c, alpha);
+    assemble(dv, c, alpha, f)
 }

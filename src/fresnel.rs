@@ -676,6 +676,31 @@ pub fn conductor_fast<T: Real>(cos_theta_i: T, eta: T, k: T) -> T {
     T::select(ok & !c.simd_le(T::ZERO), ratio.min(T::ONE), at_grazing)
 }
 
+/// A complex index of refraction eta + i k, with its two parts named so that a call site cannot
+/// swap them: `ComplexIor { eta, k }`. `C` is a scalar (`f32`, lanes) or a colour `V3<T>` (eta
+/// and k per channel, x = r, y = g, z = b), as the full conductor BRDFs take it
+/// (`cook_torrance::ggx_conductor_rgb`).
+///
+/// An argument bundle, not a validated parameter: the kernel it is passed to keeps the
+/// crate's rule for invalid values (eta <= 0, k < 0 or NaN give NaN in that channel).
+/// Published values are per wavelength; Gulbrandsen 2014 ("Artist Friendly Metallic Fresnel",
+/// JCGT 3(4)) lists RGB fits.
+///
+/// ```
+/// use brdf::V3;
+/// use brdf::fresnel::{self, ComplexIor};
+/// let gold = ComplexIor { eta: V3::new(0.18, 0.42, 1.37), k: V3::new(3.42, 2.35, 1.77) };
+/// let f = fresnel::conductor_rgb(1.0_f64, gold.eta, gold.k);
+/// assert!(f.x > f.z);
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ComplexIor<C> {
+    /// The real part: the refractive index n (eta).
+    pub eta: C,
+    /// The imaginary part: the extinction coefficient k (absorption), k >= 0.
+    pub k: C,
+}
+
 /// [`conductor`] per channel for RGB eta and k (x = r, y = g, z = b).
 #[inline]
 #[must_use]

@@ -32,8 +32,10 @@
 //! ```
 //! All features are on by default (`default-features = false` keeps only what you list). For a
 //! whole glTF 2.0 material rather than its terms, `material::MetallicRoughness` evaluates and
-//! samples base colour, metallic and roughness from local-frame directions (the repository's
-//! `examples/sphere.rs` shades a sphere with it in under 60 lines). Lanes equal scalars bit for
+//! samples base colour, metallic and roughness from local-frame directions, or from world space
+//! through a [`ShadingPoint`] built once per pixel (the repository's `examples/sphere.rs` shades
+//! a sphere with it in about 60 lines). Every full BRDF takes a shading point's cosines as one
+//! [`Cosines`] value, in the crate's one order n.v, n.l, n.h, v.h ([`shading`]). Lanes equal scalars bit for
 //! bit on a given target wherever a kernel uses only arithmetic, `sqrt` and `mul_add`; where it
 //! calls `exp`, `ln`, `sin`, `cos`, `atan`, `acos` or `asin`, the lanes use polynomial forms 1 to
 //! 3 ULP from the scalar `libm` ones (the table in [`real`]), and the kernel's lanes can differ
@@ -52,6 +54,7 @@
 //! | [`real`] | [`Real`]: the float/lane trait, its [`Mask`], lane accuracy bounds | always |
 //! | [`vec3`] | [`V3`]: 3-vector of scalars or lanes (structure of arrays), glam conversions | always |
 //! | [`frame`] | orthonormal basis from a normal, local-frame `cos_theta`/`tan2_theta`/`cos_phi` | always |
+//! | [`shading`] | a shading point's [`Cosines`] (n.v, n.l, n.h, v.h) and world-to-local [`ShadingPoint`]; the crate's one argument order | always |
 //! | [`error`] | [`ParamError`], returned by parameter constructors | always |
 //! | [`batch`] | any kernel over structure-of-arrays slices, 8 `f32` / 4 `f64` at a time | always |
 //! | `fresnel` | Schlick (+F90, SG), exact dielectric and polarized, conductor, F82 tint | `fresnel` |
@@ -108,6 +111,7 @@ pub mod batch;
 pub mod error;
 pub mod frame;
 pub mod real;
+pub mod shading;
 pub mod vec3;
 
 #[cfg(feature = "beckmann")]
@@ -148,6 +152,7 @@ pub use error::ParamError;
 /// The vector math crate whose `Vec3`/`DVec3` convert to [`V3`].
 pub use glam;
 pub use real::{Mask, Real};
+pub use shading::{Cosines, ShadingPoint};
 pub use vec3::V3;
 /// The SIMD crate whose `f32x8` and `f64x4` implement [`Real`].
 pub use wide;

@@ -82,6 +82,7 @@ use crate::ggx::{self, Ggx};
 use crate::microfacet::alpha_from_perceptual;
 use crate::real::Real;
 use crate::sampling;
+use crate::shading::{Cosines, ShadingPoint};
 use crate::vec3::V3;
 
 /// F0 of the glTF 2.0 dielectric: ((1.5 - 1) / (1.5 + 1))^2 = 0.04, the index of refraction
@@ -269,7 +270,8 @@ fn any_nan<T: Real>(a: V3<T>, b: V3<T>) -> T::Mask {
 /// and kd from `coupling` (see the [module docs](self)). F90 of the dielectric is 1; use
 /// [`MetallicRoughness`] for KHR_materials_specular's coloured F0 and F90.
 ///
-/// Arguments: the cosines n.v, n.l, n.h and v.h of unit vectors; `base_color` with each
+/// Arguments: the shading point's [`Cosines`] (n.v, n.l, n.h and v.h of unit vectors, from
+/// [`Cosines::from_world`], a [`ShadingPoint`] or a struct literal); `base_color` with each
 /// channel in [0, 1]; `metallic` in [0, 1]; perceptual `roughness` in [0, 1] (glTF's
 /// `roughnessFactor`, not alpha: alpha = roughness^2 is formed here);
 /// `dielectric_f0` in [0, 1] (0.04 = [`GLTF_DIELECTRIC_F0`] for glTF, [`f0_from_reflectance`]
@@ -292,10 +294,7 @@ fn any_nan<T: Real>(a: V3<T>, b: V3<T>) -> T::Mask {
 #[inline]
 #[must_use]
 pub fn metallic_roughness<T: Real>(
-    n_dot_v: T,
-    n_dot_l: T,
-    n_dot_h: T,
-    v_dot_h: T,
+    c: Cosines<T>,
     base_color: V3<T>,
     metallic: T,
     roughness: T,
@@ -305,17 +304,17 @@ pub fn metallic_roughness<T: Real>(
     let ok =
         in_unit_rgb(base_color) & in_unit(metallic) & in_unit(roughness) & in_unit(dielectric_f0);
     let f = kernel(
-        n_dot_v,
-        n_dot_l,
-        n_dot_h,
-        v_dot_h,
+        c.n_dot_v,
+        c.n_dot_l,
+        c.n_dot_h,
+        c.v_dot_h,
         base_color,
         metallic,
         alpha_from_perceptual(roughness),
         V3::splat(dielectric_f0),
         T::ONE,
         coupling,
-        n_dot_v.is_nan(),
+        c.n_dot_v.is_nan(),
     );
     V3::new(
         nan_unless(ok, f.x),
@@ -333,20 +332,9 @@ pub fn metallic_roughness<T: Real>(
 /// Source: The Khronos Group, "glTF 2.0 Specification", Appendix B "BRDF Implementation".
 #[inline]
 #[must_use]
-pub fn gltf<T: Real>(
-    n_dot_v: T,
-    n_dot_l: T,
-    n_dot_h: T,
-    v_dot_h: T,
-    base_color: V3<T>,
-    metallic: T,
-    roughness: T,
-) -> V3<T> {
+pub fn gltf<T: Real>(c: Cosines<T>, base_color: V3<T>, metallic: T, roughness: T) -> V3<T> {
     metallic_roughness(
-        n_dot_v,
-        n_dot_l,
-        n_dot_h,
-        v_dot_h,
+        c,
         base_color,
         metallic,
         roughness,
@@ -690,5 +678,54 @@ impl<T: Real> MetallicRoughness<T> {
         let positive = pdf.simd_gt(T::ZERO);
         let scale = T::select(positive, wi.z.max(T::ZERO) / pdf, T::ZERO);
         (wi, pdf, f * scale)
+    }
+
+    /// [`eval`](Self::eval) from world space: f(v, l) for the shading point `sp` (its normal
+    /// and view direction, [`ShadingPoint::new`], built once per pixel) and the world-space
+    /// unit light direction `l`. Equal to `self.eval(sp.wo(), sp.local(l))`.
+    ///
+    /// ```
+    /// use brdf::V3;
+    /// use brdf::material::MetallicRoughness;
+    /// use brdf::shading::ShadingPoint;
+    ///
+    /// let m = MetallicRoughness::new(V3::new(0.9, 0.6, 0.2), 1.0, 0.4)?;
+    /// let (n, v) = (V3::new(0.0, 0.6, 0.8), V3::new(0.0, 0.0, 1.0));
+    /// let sp = ShadingPoint::new(n, v);
+    /// let l = V3::new(0.0, 0.96, 0.28); // the mirror direction of v about n
+    /// let rgb: V3<f64> = m.eval_world(&sp, l) * n.dot(l);
+    /// assert!(rgb.x > rgb.z && rgb.z > 0.0);
+    /// # Ok::<(), brdf::ParamError>(())
+    /// ```
+    #[inline]
+    #[must_use]
+    pub fn eval_world(&self, sp: &ShadingPoint<T>, l: V3<T>) -> V3<T> {
+        self.eval(sp.wo(), sp.local(l))
+    }
+
+    /// [`pdf`](Self::pdf) from world space: the solid-angle pdf of drawing the world-space
+    /// direction `l` at the shading point `sp` with [`sample_world`](Self::sample_world).
+    #[inline]
+    #[must_use]
+    pub fn pdf_world(&self, sp: &ShadingPoint<T>, l: V3<T>) -> T {
+        self.pdf(sp.wo(), sp.local(l))
+    }
+
+    /// [`sample`](Self::sample) in world space: (l, pdf) with l the drawn world-space
+    /// direction, `sp.world(wi)` of the local sample.
+    #[inline]
+    #[must_use]
+    pub fn sample_world(&self, sp: &ShadingPoint<T>, u1: T, u2: T) -> (V3<T>, T) {
+        let (wi, pdf) = self.sample(sp.wo(), u1, u2);
+        (sp.world(wi), pdf)
+    }
+
+    /// [`sample_weighted`](Self::sample_weighted) in world space: (l, pdf, f(v, l) n.l / pdf)
+    /// with l in world space.
+    #[inline]
+    #[must_use]
+    pub fn sample_weighted_world(&self, sp: &ShadingPoint<T>, u1: T, u2: T) -> (V3<T>, T, V3<T>) {
+        let (wi, pdf, w) = self.sample_weighted(sp.wo(), u1, u2);
+        (sp.world(wi), pdf, w)
     }
 }

@@ -34,6 +34,9 @@
     allow(dead_code, unused_imports)
 )]
 
+use brdf::Cosines;
+use brdf::fresnel::ComplexIor;
+use brdf::ibl::energy::{Albedo, AverageAlbedo, Reflectance};
 use brdf::wide::{f32x8, f64x4};
 use brdf::{Real, V3};
 
@@ -305,12 +308,23 @@ fn ibl_rows<T: Real>(t: &mut Vec<Kernel<T>>) {
             p("e_i", 0.7, &UNIT_BAD),
             p("e_avg", 0.6, &UNIT_BAD),
         ],
-        |x| vec![energy::kulla_conty_lobe(x[0], x[1], x[2])],
+        |x| {
+            vec![energy::kulla_conty_lobe(
+                Albedo(x[0]),
+                Albedo(x[1]),
+                AverageAlbedo(x[2]),
+            )]
+        },
     ));
     t.push(k(
         "ibl::energy::kulla_conty_fresnel",
         vec![p("f_avg", 0.5, &UNIT_BAD), p("e_avg", 0.6, &UNIT_BAD)],
-        |x| vec![energy::kulla_conty_fresnel(x[0], x[1])],
+        |x| {
+            vec![energy::kulla_conty_fresnel(
+                Reflectance(x[0]),
+                AverageAlbedo(x[1]),
+            )]
+        },
     ));
     t.push(k(
         "ibl::energy::fresnel_avg_schlick",
@@ -348,7 +362,7 @@ fn ibl_rows<T: Real>(t: &mut Vec<Kernel<T>>) {
             p("e", 0.8, &[0.0, -0.1, 1.1, INF, -INF]),
             p("f", 0.5, &UNIT_BAD),
         ],
-        |x| vec![energy::turquin_scale(x[0], x[1])],
+        |x| vec![energy::turquin_scale(Albedo(x[0]), Reflectance(x[1]))],
     ));
     t.push(k(
         "ibl::energy::fdez_aguera_ms",
@@ -357,7 +371,13 @@ fn ibl_rows<T: Real>(t: &mut Vec<Kernel<T>>) {
             p("e_ss", 0.8, &UNIT_BAD),
             p("f_avg", 0.5, &UNIT_BAD),
         ],
-        |x| vec![energy::fdez_aguera_ms(x[0], x[1], x[2])],
+        |x| {
+            vec![energy::fdez_aguera_ms(
+                x[0],
+                Albedo(x[1]),
+                Reflectance(x[2]),
+            )]
+        },
     ));
     t.push(k(
         "ibl::energy::fdez_aguera",
@@ -903,11 +923,23 @@ fn cook_torrance_rows<T: Real>(t: &mut Vec<Kernel<T>>) {
                 c("n_dot_h", NH),
                 c("n_dot_v", NV),
                 c("n_dot_l", NL),
+                c("v_dot_h", VH),
                 p("alpha", 0.3, &ALPHA_BAD),
                 // F >= 0: a coloured F90 or a layered F may exceed 1.
                 p("fresnel", 0.1, &[-0.1, -INF]),
             ],
-            |x| vec![ct::ggx(x[0], x[1], x[2], x[3], x[4])],
+            |x| {
+                vec![ct::ggx(
+                    Cosines {
+                        n_dot_v: x[1],
+                        n_dot_l: x[2],
+                        n_dot_h: x[0],
+                        v_dot_h: x[3],
+                    },
+                    x[4],
+                    x[5],
+                )]
+            },
         ));
         t.push(
             k(
@@ -923,13 +955,17 @@ fn cook_torrance_rows<T: Real>(t: &mut Vec<Kernel<T>>) {
                 ],
                 |x| {
                     o3(ct::ggx_conductor_rgb(
-                        x[0],
-                        x[1],
-                        x[2],
-                        x[3],
+                        Cosines {
+                            n_dot_v: x[1],
+                            n_dot_l: x[2],
+                            n_dot_h: x[0],
+                            v_dot_h: x[3],
+                        },
                         x[4],
-                        v3(x, 5),
-                        v3(x, 8),
+                        ComplexIor {
+                            eta: v3(x, 5),
+                            k: v3(x, 8),
+                        },
                     ))
                 },
             )
@@ -951,7 +987,18 @@ fn cook_torrance_rows<T: Real>(t: &mut Vec<Kernel<T>>) {
                     p("alpha", 0.3, &ALPHA_BAD),
                     rgb("f0", [0.9, 0.6, 0.3], &UNIT_BAD),
                 ],
-                |x| o3(ct::ggx_schlick_rgb(x[0], x[1], x[2], x[3], x[4], v3(x, 5))),
+                |x| {
+                    o3(ct::ggx_schlick_rgb(
+                        Cosines {
+                            n_dot_v: x[1],
+                            n_dot_l: x[2],
+                            n_dot_h: x[0],
+                            v_dot_h: x[3],
+                        },
+                        x[4],
+                        v3(x, 5),
+                    ))
+                },
             )
             .dep("f0.x", &[0])
             .dep("f0.y", &[1])
@@ -967,7 +1014,18 @@ fn cook_torrance_rows<T: Real>(t: &mut Vec<Kernel<T>>) {
                 p("alpha", 0.3, &ALPHA_BAD),
                 p("eta", 1.5, &ETA_BAD),
             ],
-            |x| vec![ct::ggx_dielectric(x[0], x[1], x[2], x[3], x[4], x[5])],
+            |x| {
+                vec![ct::ggx_dielectric(
+                    Cosines {
+                        n_dot_v: x[1],
+                        n_dot_l: x[2],
+                        n_dot_h: x[0],
+                        v_dot_h: x[3],
+                    },
+                    x[4],
+                    x[5],
+                )]
+            },
         ));
     }
     #[cfg(feature = "beckmann")]
@@ -977,11 +1035,23 @@ fn cook_torrance_rows<T: Real>(t: &mut Vec<Kernel<T>>) {
             c("n_dot_h", NH),
             c("n_dot_v", NV),
             c("n_dot_l", NL),
+            c("v_dot_h", VH),
             p("alpha", 0.3, &ALPHA_BAD),
             // F >= 0: a coloured F90 or a layered F may exceed 1.
             p("fresnel", 0.1, &[-0.1, -INF]),
         ],
-        |x| vec![ct::beckmann(x[0], x[1], x[2], x[3], x[4])],
+        |x| {
+            vec![ct::beckmann(
+                Cosines {
+                    n_dot_v: x[1],
+                    n_dot_l: x[2],
+                    n_dot_h: x[0],
+                    v_dot_h: x[3],
+                },
+                x[4],
+                x[5],
+            )]
+        },
     ));
     #[cfg(feature = "beckmann")]
     {
@@ -999,13 +1069,17 @@ fn cook_torrance_rows<T: Real>(t: &mut Vec<Kernel<T>>) {
                 ],
                 |x| {
                     o3(ct::beckmann_conductor_rgb(
-                        x[0],
-                        x[1],
-                        x[2],
-                        x[3],
+                        Cosines {
+                            n_dot_v: x[1],
+                            n_dot_l: x[2],
+                            n_dot_h: x[0],
+                            v_dot_h: x[3],
+                        },
                         x[4],
-                        v3(x, 5),
-                        v3(x, 8),
+                        ComplexIor {
+                            eta: v3(x, 5),
+                            k: v3(x, 8),
+                        },
                     ))
                 },
             )
@@ -1029,10 +1103,12 @@ fn cook_torrance_rows<T: Real>(t: &mut Vec<Kernel<T>>) {
                 ],
                 |x| {
                     o3(ct::beckmann_schlick_rgb(
-                        x[0],
-                        x[1],
-                        x[2],
-                        x[3],
+                        Cosines {
+                            n_dot_v: x[1],
+                            n_dot_l: x[2],
+                            n_dot_h: x[0],
+                            v_dot_h: x[3],
+                        },
                         x[4],
                         v3(x, 5),
                     ))
@@ -1052,7 +1128,18 @@ fn cook_torrance_rows<T: Real>(t: &mut Vec<Kernel<T>>) {
                 p("alpha", 0.3, &ALPHA_BAD),
                 p("eta", 1.5, &ETA_BAD),
             ],
-            |x| vec![ct::beckmann_dielectric(x[0], x[1], x[2], x[3], x[4], x[5])],
+            |x| {
+                vec![ct::beckmann_dielectric(
+                    Cosines {
+                        n_dot_v: x[1],
+                        n_dot_l: x[2],
+                        n_dot_h: x[0],
+                        v_dot_h: x[3],
+                    },
+                    x[4],
+                    x[5],
+                )]
+            },
         ));
     }
 }
@@ -1605,6 +1692,7 @@ fn phong_rows<T: Real>(t: &mut Vec<Kernel<T>>) {
 
 #[cfg(feature = "material")]
 fn material_rows<T: Real>(t: &mut Vec<Kernel<T>>) {
+    use brdf::ShadingPoint;
     use brdf::material::*;
     let s = T::splat;
     t.push(k(
@@ -1635,10 +1723,12 @@ fn material_rows<T: Real>(t: &mut Vec<Kernel<T>>) {
             a,
             move |x| {
                 o3(metallic_roughness(
-                    x[0],
-                    x[1],
-                    x[2],
-                    x[3],
+                    Cosines {
+                        n_dot_v: x[0],
+                        n_dot_l: x[1],
+                        n_dot_h: x[2],
+                        v_dot_h: x[3],
+                    },
                     v3(x, 4),
                     x[7],
                     x[8],
@@ -1649,7 +1739,17 @@ fn material_rows<T: Real>(t: &mut Vec<Kernel<T>>) {
         ));
     }
     t.push(k("material::gltf", args(), |x| {
-        o3(gltf(x[0], x[1], x[2], x[3], v3(x, 4), x[7], x[8]))
+        o3(gltf(
+            Cosines {
+                n_dot_v: x[0],
+                n_dot_l: x[1],
+                n_dot_h: x[2],
+                v_dot_h: x[3],
+            },
+            v3(x, 4),
+            x[7],
+            x[8],
+        ))
     }));
     let mats = [
         (
@@ -1693,6 +1793,32 @@ fn material_rows<T: Real>(t: &mut Vec<Kernel<T>>) {
             move |x| {
                 let (wi, pdf, w) = m.sample_weighted(v3(x, 0), x[3], x[4]);
                 [o4((wi, pdf)), o3(w)].concat()
+            },
+        ));
+        // World space: a shading point of normal n and view v (both world-space unit vectors).
+        let n_v = || [v("n", [0.0, 0.6, 0.8]), v("v", WO)].concat();
+        let sp = |x: &[T]| ShadingPoint::new(v3(x, 0), v3(x, 3));
+        t.push(k(
+            &format!("MetallicRoughness::eval_world({label})"),
+            vec![n_v(), v("l", WI)],
+            move |x| o3(m.eval_world(&sp(x), v3(x, 6))),
+        ));
+        t.push(k(
+            &format!("MetallicRoughness::pdf_world({label})"),
+            vec![n_v(), v("l", WI)],
+            move |x| vec![m.pdf_world(&sp(x), v3(x, 6))],
+        ));
+        t.push(k(
+            &format!("MetallicRoughness::sample_world({label})"),
+            vec![n_v(), u()],
+            move |x| o4(m.sample_world(&sp(x), x[6], x[7])),
+        ));
+        t.push(k(
+            &format!("MetallicRoughness::sample_weighted_world({label})"),
+            vec![n_v(), u()],
+            move |x| {
+                let (l, pdf, w) = m.sample_weighted_world(&sp(x), x[6], x[7]);
+                [o4((l, pdf)), o3(w)].concat()
             },
         ));
     }

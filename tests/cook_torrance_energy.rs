@@ -9,6 +9,7 @@
     feature = "beckmann"
 ))]
 
+use brdf::Cosines;
 use brdf::V3;
 use brdf::beckmann::Beckmann;
 use brdf::cook_torrance;
@@ -137,9 +138,27 @@ fn dot_product_entry_points_equal_the_vector_ones() {
         let (h, v_dot_h) = cook_torrance::half_vector(wo, wi);
         let f = brdf::fresnel::schlick(0.04, v_dot_h);
         let vec_g = cook_torrance::eval(&g, wo, wi, |c| brdf::fresnel::schlick(0.04, c));
-        let dot_g = cook_torrance::ggx(h.z, wo.z, wi.z, alpha, f);
+        let dot_g = cook_torrance::ggx(
+            Cosines {
+                n_dot_v: wo.z,
+                n_dot_l: wi.z,
+                n_dot_h: h.z,
+                v_dot_h,
+            },
+            alpha,
+            f,
+        );
         let vec_b = cook_torrance::eval(&b, wo, wi, |c| brdf::fresnel::schlick(0.04, c));
-        let dot_b = cook_torrance::beckmann(h.z, wo.z, wi.z, alpha, f);
+        let dot_b = cook_torrance::beckmann(
+            Cosines {
+                n_dot_v: wo.z,
+                n_dot_l: wi.z,
+                n_dot_h: h.z,
+                v_dot_h,
+            },
+            alpha,
+            f,
+        );
         assert!((vec_g - dot_g).abs() <= 1e-12 * vec_g, "{vec_g} vs {dot_g}");
         assert!((vec_b - dot_b).abs() <= 1e-10 * vec_b, "{vec_b} vs {dot_b}");
     }

@@ -16,9 +16,11 @@
 
 mod common;
 
+use brdf::Cosines;
 use brdf::beckmann::Beckmann;
 use brdf::cook_torrance as ct;
 use brdf::fresnel;
+use brdf::fresnel::ComplexIor;
 use brdf::ggx::Ggx;
 use brdf::integrate::directional_albedo;
 use brdf::wide::{f32x8, f64x4};
@@ -69,21 +71,34 @@ fn grid() -> Vec<[f64; 5]> {
 #[allow(clippy::type_complexity)]
 fn per_channel_bits<T: Real>(
     name: &str,
-    scalar: fn(T, T, T, T, T) -> T,
-    conductor: fn(T, T, T, T, T, V3<T>, V3<T>) -> V3<T>,
-    schlick: fn(T, T, T, T, T, V3<T>) -> V3<T>,
-    dielectric: fn(T, T, T, T, T, T) -> T,
+    scalar: fn(Cosines<T>, T, T) -> T,
+    conductor: fn(Cosines<T>, T, ComplexIor<V3<T>>) -> V3<T>,
+    schlick: fn(Cosines<T>, T, V3<T>) -> V3<T>,
+    dielectric: fn(Cosines<T>, T, T) -> T,
 ) -> usize {
     let mut n = 0;
     let mut fails = Vec::new();
     for p in grid() {
         let [nh, nv, nl, vh, a] = p.map(T::splat);
+        let cs = Cosines {
+            n_dot_v: nv,
+            n_dot_l: nl,
+            n_dot_h: nh,
+            v_dot_h: vh,
+        };
         let channels = |v: V3<T>| [v.x, v.y, v.z];
         for (eta, k) in CONDUCTORS {
-            let got = channels(conductor(nh, nv, nl, vh, a, v3(eta), v3(k)));
+            let got = channels(conductor(
+                cs,
+                a,
+                ComplexIor {
+                    eta: v3(eta),
+                    k: v3(k),
+                },
+            ));
             for c in 0..3 {
                 let f = fresnel::conductor(vh, T::splat(eta[c]), T::splat(k[c]));
-                let want = scalar(nh, nv, nl, a, f);
+                let want = scalar(cs, a, f);
                 n += 1;
                 if !same(got[c], want) {
                     fails.push(format!("{name} conductor {p:?} ch {c}"));
@@ -91,9 +106,9 @@ fn per_channel_bits<T: Real>(
             }
         }
         for f0 in F0S {
-            let got = channels(schlick(nh, nv, nl, vh, a, v3(f0)));
+            let got = channels(schlick(cs, a, v3(f0)));
             for c in 0..3 {
-                let want = scalar(nh, nv, nl, a, fresnel::schlick(T::splat(f0[c]), vh));
+                let want = scalar(cs, a, fresnel::schlick(T::splat(f0[c]), vh));
                 n += 1;
                 if !same(got[c], want) {
                     fails.push(format!("{name} schlick {p:?} ch {c}"));
@@ -101,10 +116,10 @@ fn per_channel_bits<T: Real>(
             }
         }
         for eta in ETAS {
-            let got = dielectric(nh, nv, nl, vh, a, T::splat(eta));
+            let got = dielectric(cs, a, T::splat(eta));
             let f = fresnel::dielectric(vh.saturate(), T::splat(eta));
             n += 1;
-            if !same(got, scalar(nh, nv, nl, a, f)) {
+            if !same(got, scalar(cs, a, f)) {
                 fails.push(format!("{name} dielectric {p:?} eta {eta}"));
             }
         }
@@ -213,12 +228,30 @@ fn direction_path_ulps<T: Real>(
                 let (e, kk) = (v3::<T>(eta), v3::<T>(k));
                 let fr = |c: T| fresnel::conductor_rgb(c, e, kk);
                 cmp(
-                    ct::ggx_conductor_rgb(nh, nv, nl, vh, al, e, kk),
+                    ct::ggx_conductor_rgb(
+                        Cosines {
+                            n_dot_v: nv,
+                            n_dot_l: nl,
+                            n_dot_h: nh,
+                            v_dot_h: vh,
+                        },
+                        al,
+                        ComplexIor { eta: e, k: kk },
+                    ),
                     ct::eval_rgb(&ggx, wo, wi, fr),
                     &mut worst.0,
                 );
                 cmp(
-                    ct::beckmann_conductor_rgb(nh, nv, nl, vh, al, e, kk),
+                    ct::beckmann_conductor_rgb(
+                        Cosines {
+                            n_dot_v: nv,
+                            n_dot_l: nl,
+                            n_dot_h: nh,
+                            v_dot_h: vh,
+                        },
+                        al,
+                        ComplexIor { eta: e, k: kk },
+                    ),
                     ct::eval_rgb(&bk, wo, wi, fr),
                     &mut worst.1,
                 );
@@ -227,20 +260,56 @@ fn direction_path_ulps<T: Real>(
                 let f0 = v3::<T>(f0);
                 let fr = |c: T| fresnel::schlick_rgb(f0, c);
                 cmp(
-                    ct::ggx_schlick_rgb(nh, nv, nl, vh, al, f0),
+                    ct::ggx_schlick_rgb(
+                        Cosines {
+                            n_dot_v: nv,
+                            n_dot_l: nl,
+                            n_dot_h: nh,
+                            v_dot_h: vh,
+                        },
+                        al,
+                        f0,
+                    ),
                     ct::eval_rgb(&ggx, wo, wi, fr),
                     &mut worst.0,
                 );
                 cmp(
-                    ct::beckmann_schlick_rgb(nh, nv, nl, vh, al, f0),
+                    ct::beckmann_schlick_rgb(
+                        Cosines {
+                            n_dot_v: nv,
+                            n_dot_l: nl,
+                            n_dot_h: nh,
+                            v_dot_h: vh,
+                        },
+                        al,
+                        f0,
+                    ),
                     ct::eval_rgb(&bk, wo, wi, fr),
                     &mut worst.1,
                 );
             }
             for eta in ETAS {
                 let e = T::splat(eta);
-                let g = ct::ggx_dielectric(nh, nv, nl, vh, al, e);
-                let b = ct::beckmann_dielectric(nh, nv, nl, vh, al, e);
+                let g = ct::ggx_dielectric(
+                    Cosines {
+                        n_dot_v: nv,
+                        n_dot_l: nl,
+                        n_dot_h: nh,
+                        v_dot_h: vh,
+                    },
+                    al,
+                    e,
+                );
+                let b = ct::beckmann_dielectric(
+                    Cosines {
+                        n_dot_v: nv,
+                        n_dot_l: nl,
+                        n_dot_h: nh,
+                        v_dot_h: vh,
+                    },
+                    al,
+                    e,
+                );
                 cmp(
                     V3::splat(g),
                     V3::splat(ct::dielectric(&ggx, wo, wi, e)),
@@ -320,33 +389,103 @@ fn rgb_forms_conserve_energy() {
     let forms: [(&str, Form); 6] = [
         (
             "GGX F=1",
-            Box::new(|nh, nv, nl, vh, a| ct::ggx_schlick_rgb(nh, nv, nl, vh, a, V3::splat(1.0)).x),
+            Box::new(|nh, nv, nl, vh, a| {
+                ct::ggx_schlick_rgb(
+                    Cosines {
+                        n_dot_v: nv,
+                        n_dot_l: nl,
+                        n_dot_h: nh,
+                        v_dot_h: vh,
+                    },
+                    a,
+                    V3::splat(1.0),
+                )
+                .x
+            }),
         ),
         (
             "GGX gold red",
             Box::new(move |nh, nv, nl, vh, a| {
-                ct::ggx_conductor_rgb(nh, nv, nl, vh, a, gold.0, gold.1).x
+                ct::ggx_conductor_rgb(
+                    Cosines {
+                        n_dot_v: nv,
+                        n_dot_l: nl,
+                        n_dot_h: nh,
+                        v_dot_h: vh,
+                    },
+                    a,
+                    ComplexIor {
+                        eta: gold.0,
+                        k: gold.1,
+                    },
+                )
+                .x
             }),
         ),
         (
             "GGX glass",
-            Box::new(|nh, nv, nl, vh, a| ct::ggx_dielectric(nh, nv, nl, vh, a, 1.5)),
+            Box::new(|nh, nv, nl, vh, a| {
+                ct::ggx_dielectric(
+                    Cosines {
+                        n_dot_v: nv,
+                        n_dot_l: nl,
+                        n_dot_h: nh,
+                        v_dot_h: vh,
+                    },
+                    a,
+                    1.5,
+                )
+            }),
         ),
         (
             "Beckmann F=1",
             Box::new(|nh, nv, nl, vh, a| {
-                ct::beckmann_schlick_rgb(nh, nv, nl, vh, a, V3::splat(1.0)).x
+                ct::beckmann_schlick_rgb(
+                    Cosines {
+                        n_dot_v: nv,
+                        n_dot_l: nl,
+                        n_dot_h: nh,
+                        v_dot_h: vh,
+                    },
+                    a,
+                    V3::splat(1.0),
+                )
+                .x
             }),
         ),
         (
             "Beckmann gold red",
             Box::new(move |nh, nv, nl, vh, a| {
-                ct::beckmann_conductor_rgb(nh, nv, nl, vh, a, gold.0, gold.1).x
+                ct::beckmann_conductor_rgb(
+                    Cosines {
+                        n_dot_v: nv,
+                        n_dot_l: nl,
+                        n_dot_h: nh,
+                        v_dot_h: vh,
+                    },
+                    a,
+                    ComplexIor {
+                        eta: gold.0,
+                        k: gold.1,
+                    },
+                )
+                .x
             }),
         ),
         (
             "Beckmann glass",
-            Box::new(|nh, nv, nl, vh, a| ct::beckmann_dielectric(nh, nv, nl, vh, a, 1.5)),
+            Box::new(|nh, nv, nl, vh, a| {
+                ct::beckmann_dielectric(
+                    Cosines {
+                        n_dot_v: nv,
+                        n_dot_l: nl,
+                        n_dot_h: nh,
+                        v_dot_h: vh,
+                    },
+                    a,
+                    1.5,
+                )
+            }),
         ),
     ];
     for (name, f) in &forms {
@@ -405,23 +544,143 @@ fn lanes_vs_scalars<L: Real>() -> [u64; 6] {
         let col = |j: usize| L::from_fn(|i| L::Scalar::splat(chunk[i][j]));
         let [nh, nv, nl, vh, a] = [0, 1, 2, 3, 4].map(col);
         let outs: [V3<L>; 6] = [
-            ct::ggx_conductor_rgb(nh, nv, nl, vh, a, v3(eta), v3(k)),
-            ct::ggx_schlick_rgb(nh, nv, nl, vh, a, v3(f0)),
-            V3::splat(ct::ggx_dielectric(nh, nv, nl, vh, a, L::splat(1.5))),
-            ct::beckmann_conductor_rgb(nh, nv, nl, vh, a, v3(eta), v3(k)),
-            ct::beckmann_schlick_rgb(nh, nv, nl, vh, a, v3(f0)),
-            V3::splat(ct::beckmann_dielectric(nh, nv, nl, vh, a, L::splat(1.5))),
+            ct::ggx_conductor_rgb(
+                Cosines {
+                    n_dot_v: nv,
+                    n_dot_l: nl,
+                    n_dot_h: nh,
+                    v_dot_h: vh,
+                },
+                a,
+                ComplexIor {
+                    eta: v3(eta),
+                    k: v3(k),
+                },
+            ),
+            ct::ggx_schlick_rgb(
+                Cosines {
+                    n_dot_v: nv,
+                    n_dot_l: nl,
+                    n_dot_h: nh,
+                    v_dot_h: vh,
+                },
+                a,
+                v3(f0),
+            ),
+            V3::splat(ct::ggx_dielectric(
+                Cosines {
+                    n_dot_v: nv,
+                    n_dot_l: nl,
+                    n_dot_h: nh,
+                    v_dot_h: vh,
+                },
+                a,
+                L::splat(1.5),
+            )),
+            ct::beckmann_conductor_rgb(
+                Cosines {
+                    n_dot_v: nv,
+                    n_dot_l: nl,
+                    n_dot_h: nh,
+                    v_dot_h: vh,
+                },
+                a,
+                ComplexIor {
+                    eta: v3(eta),
+                    k: v3(k),
+                },
+            ),
+            ct::beckmann_schlick_rgb(
+                Cosines {
+                    n_dot_v: nv,
+                    n_dot_l: nl,
+                    n_dot_h: nh,
+                    v_dot_h: vh,
+                },
+                a,
+                v3(f0),
+            ),
+            V3::splat(ct::beckmann_dielectric(
+                Cosines {
+                    n_dot_v: nv,
+                    n_dot_l: nl,
+                    n_dot_h: nh,
+                    v_dot_h: vh,
+                },
+                a,
+                L::splat(1.5),
+            )),
         ];
         for (i, p) in chunk.iter().enumerate() {
             let [nh, nv, nl, vh, a] = p.map(L::Scalar::splat);
             let s = L::Scalar::splat;
             let want: [V3<L::Scalar>; 6] = [
-                ct::ggx_conductor_rgb(nh, nv, nl, vh, a, v3(eta), v3(k)),
-                ct::ggx_schlick_rgb(nh, nv, nl, vh, a, v3(f0)),
-                V3::splat(ct::ggx_dielectric(nh, nv, nl, vh, a, s(1.5))),
-                ct::beckmann_conductor_rgb(nh, nv, nl, vh, a, v3(eta), v3(k)),
-                ct::beckmann_schlick_rgb(nh, nv, nl, vh, a, v3(f0)),
-                V3::splat(ct::beckmann_dielectric(nh, nv, nl, vh, a, s(1.5))),
+                ct::ggx_conductor_rgb(
+                    Cosines {
+                        n_dot_v: nv,
+                        n_dot_l: nl,
+                        n_dot_h: nh,
+                        v_dot_h: vh,
+                    },
+                    a,
+                    ComplexIor {
+                        eta: v3(eta),
+                        k: v3(k),
+                    },
+                ),
+                ct::ggx_schlick_rgb(
+                    Cosines {
+                        n_dot_v: nv,
+                        n_dot_l: nl,
+                        n_dot_h: nh,
+                        v_dot_h: vh,
+                    },
+                    a,
+                    v3(f0),
+                ),
+                V3::splat(ct::ggx_dielectric(
+                    Cosines {
+                        n_dot_v: nv,
+                        n_dot_l: nl,
+                        n_dot_h: nh,
+                        v_dot_h: vh,
+                    },
+                    a,
+                    s(1.5),
+                )),
+                ct::beckmann_conductor_rgb(
+                    Cosines {
+                        n_dot_v: nv,
+                        n_dot_l: nl,
+                        n_dot_h: nh,
+                        v_dot_h: vh,
+                    },
+                    a,
+                    ComplexIor {
+                        eta: v3(eta),
+                        k: v3(k),
+                    },
+                ),
+                ct::beckmann_schlick_rgb(
+                    Cosines {
+                        n_dot_v: nv,
+                        n_dot_l: nl,
+                        n_dot_h: nh,
+                        v_dot_h: vh,
+                    },
+                    a,
+                    v3(f0),
+                ),
+                V3::splat(ct::beckmann_dielectric(
+                    Cosines {
+                        n_dot_v: nv,
+                        n_dot_l: nl,
+                        n_dot_h: nh,
+                        v_dot_h: vh,
+                    },
+                    a,
+                    s(1.5),
+                )),
             ];
             for (form, (o, w)) in outs.iter().zip(&want).enumerate() {
                 let got = o.lane(i);

@@ -7,6 +7,7 @@
 use brdf::V3;
 use brdf::cook_torrance;
 use brdf::ggx::Ggx;
+use brdf::ibl::energy::{Albedo, Reflectance};
 use brdf::ibl::energy::{e_ggx, e_ggx_estimate, fdez_aguera, kulla_conty_ggx, turquin_scale};
 use brdf::integrate::directional_albedo;
 use brdf::microfacet::ALPHA_MIN;
@@ -107,8 +108,9 @@ fn turquin_scale_with_f_one_passes_the_white_furnace() {
             let (e_ss, _) = albedo(theta, |o, i| cook_torrance::eval(&g, o, i, |_| 1.0));
             // The factor is a constant for a given view, so the scaled albedo is its product
             // with the single-scattering albedo (the integrator is linear).
-            let table = turquin_scale(e_ggx(mu, alpha), 1.0) * e_ss;
-            let exact = turquin_scale(e_ggx_estimate(mu, alpha, 65536), 1.0) * e_ss;
+            let table = turquin_scale(Albedo(e_ggx(mu, alpha)), Reflectance(1.0)) * e_ss;
+            let exact =
+                turquin_scale(Albedo(e_ggx_estimate(mu, alpha, 65536)), Reflectance(1.0)) * e_ss;
             print!(" {table:>8.5}");
             worst_table = worst_table.max((table - 1.0).abs());
             worst_exact = worst_exact.max((exact - 1.0).abs());

@@ -5,6 +5,7 @@
 //! the rest is the same arithmetic), with a NaN in one lane leaving the others untouched.
 #![cfg(feature = "ibl")]
 
+use brdf::ibl::energy::{Albedo, AverageAlbedo, Reflectance};
 use brdf::ibl::energy::{
     e_avg_ggx, e_ggx, fdez_aguera, fdez_aguera_ms, fresnel_avg_schlick, kulla_conty_fresnel,
     kulla_conty_ggx, kulla_conty_ggx_rgb, kulla_conty_lobe, turquin_scale,
@@ -45,7 +46,13 @@ fn rows<T: Real>() -> Vec<Row<T>> {
                 ("e_i", 0.7, vec![-0.1, 1.1], all()),
                 ("e_avg", 0.75, vec![-0.1, 1.1], all()),
             ],
-            f: |a| vec![kulla_conty_lobe(a[0], a[1], a[2])],
+            f: |a| {
+                vec![kulla_conty_lobe(
+                    Albedo(a[0]),
+                    Albedo(a[1]),
+                    AverageAlbedo(a[2]),
+                )]
+            },
         },
         Row {
             name: "kulla_conty_fresnel",
@@ -53,7 +60,7 @@ fn rows<T: Real>() -> Vec<Row<T>> {
                 ("f_avg", 0.6, vec![-0.1, 1.1], all()),
                 ("e_avg", 0.7, vec![-0.1, 1.1], all()),
             ],
-            f: |a| vec![kulla_conty_fresnel(a[0], a[1])],
+            f: |a| vec![kulla_conty_fresnel(Reflectance(a[0]), AverageAlbedo(a[1]))],
         },
         Row {
             name: "fresnel_avg_schlick",
@@ -94,7 +101,7 @@ fn rows<T: Real>() -> Vec<Row<T>> {
                 ("e", 0.6, vec![0.0, -0.1, 1.1], all()),
                 ("f", 0.5, vec![-0.1, 1.1], all()),
             ],
-            f: |a| vec![turquin_scale(a[0], a[1])],
+            f: |a| vec![turquin_scale(Albedo(a[0]), Reflectance(a[1]))],
         },
         Row {
             name: "fdez_aguera_ms",
@@ -103,7 +110,7 @@ fn rows<T: Real>() -> Vec<Row<T>> {
                 ("e_ss", 0.7, vec![-0.1, 1.1], all()),
                 ("f_avg", 0.6, vec![-0.1, 1.1], all()),
             ],
-            f: |a| vec![fdez_aguera_ms(a[0], a[1], a[2])],
+            f: |a| vec![fdez_aguera_ms(a[0], Albedo(a[1]), Reflectance(a[2]))],
         },
         Row {
             name: "fdez_aguera",

@@ -6,6 +6,7 @@
 use brdf::cook_torrance;
 use brdf::fresnel;
 use brdf::ggx::Ggx;
+use brdf::ibl::energy::{AverageAlbedo, Reflectance};
 use brdf::ibl::energy::{e_avg_ggx, fresnel_avg_schlick, kulla_conty_fresnel, kulla_conty_ggx};
 use brdf::integrate::directional_albedo;
 use brdf::{V3, glam::DVec3};
@@ -21,13 +22,13 @@ fn fms_over_favg_falls_with_favg() {
     for k in (0..=10).rev() {
         let f_avg = f64::from(k) / 10.0;
         let ratio = if f_avg > 0.0 {
-            kulla_conty_fresnel(f_avg, e_avg) / f_avg
+            kulla_conty_fresnel(Reflectance(f_avg), AverageAlbedo(e_avg)) / f_avg
         } else {
             0.0
         };
         println!(
             "  F_avg {f_avg:.1}: F_ms {:.4}, F_ms / F_avg {ratio:.4}",
-            kulla_conty_fresnel(f_avg, e_avg)
+            kulla_conty_fresnel(Reflectance(f_avg), AverageAlbedo(e_avg))
         );
         // Strictly falling: F_avg E_avg / (1 - F_avg (1 - E_avg)) is increasing in F_avg.
         assert!(ratio < prev, "{f_avg}: {ratio} >= {prev}");

@@ -4,6 +4,7 @@
 #![cfg(feature = "ibl")]
 
 use brdf::V3;
+use brdf::ibl::energy::{Albedo, Reflectance};
 use brdf::ibl::{dfg, energy};
 use brdf::wide::{f32x8, f64x4};
 
@@ -95,19 +96,37 @@ fn turquin_scale_is_one_at_f_zero_for_every_e() {
         0.5,
         1.0,
     ] {
-        assert_eq!(energy::turquin_scale(e, 0.0_f32), 1.0, "e = {e:e}");
-        let v = energy::turquin_scale(e, 1.0_f32);
+        assert_eq!(
+            energy::turquin_scale(Albedo(e), Reflectance(0.0_f32)),
+            1.0,
+            "e = {e:e}"
+        );
+        let v = energy::turquin_scale(Albedo(e), Reflectance(1.0_f32));
         assert!(v.is_finite() && v >= 1.0, "e = {e:e}: {v}");
     }
     for e in [5e-324, 1e-310] {
-        assert_eq!(energy::turquin_scale(e, 0.0_f64), 1.0, "e = {e:e}");
-        assert_eq!(energy::turquin_scale(e, 1.0_f64), f64::MAX, "e = {e:e}");
+        assert_eq!(
+            energy::turquin_scale(Albedo(e), Reflectance(0.0_f64)),
+            1.0,
+            "e = {e:e}"
+        );
+        assert_eq!(
+            energy::turquin_scale(Albedo(e), Reflectance(1.0_f64)),
+            f64::MAX,
+            "e = {e:e}"
+        );
     }
-    let lanes = energy::turquin_scale(f32x8::splat(f32::from_bits(1)), f32x8::splat(0.0));
+    let lanes = energy::turquin_scale(
+        Albedo(f32x8::splat(f32::from_bits(1))),
+        Reflectance(f32x8::splat(0.0)),
+    );
     assert_eq!(lanes.to_array(), [1.0; 8]);
-    let lanes = energy::turquin_scale(f64x4::splat(5e-324), f64x4::splat(0.0));
+    let lanes = energy::turquin_scale(Albedo(f64x4::splat(5e-324)), Reflectance(f64x4::splat(0.0)));
     assert_eq!(lanes.to_array(), [1.0; 4]);
     // Ordinary values are unchanged: 1 + 0.5 (1 - 0.25) / 0.25 = 2.5.
-    assert_eq!(energy::turquin_scale(0.25_f64, 0.5), 2.5);
-    assert!(energy::turquin_scale(f32::NAN, 0.0).is_nan());
+    assert_eq!(
+        energy::turquin_scale(Albedo(0.25_f64), Reflectance(0.5)),
+        2.5
+    );
+    assert!(energy::turquin_scale(Albedo(f32::NAN), Reflectance(0.0)).is_nan());
 }

@@ -5,6 +5,7 @@
 //! and 1 only, and differs in between by exactly the closed form the module docs give.
 #![cfg(all(feature = "material", feature = "ggx"))]
 
+use brdf::Cosines;
 use brdf::V3;
 use brdf::ggx;
 use brdf::material::{self, DiffuseCoupling, MetallicRoughness};
@@ -98,7 +99,17 @@ fn gltf_equals_the_appendix_b_composition() {
     for i in 0..20_000 {
         let (_, _, c) = cosines(&mut rng);
         let (base, metallic, roughness) = params(&mut rng, i);
-        let ours = material::gltf(c[0], c[1], c[2], c[3], rgb(base), metallic, roughness);
+        let ours = material::gltf(
+            Cosines {
+                n_dot_v: c[0],
+                n_dot_l: c[1],
+                n_dot_h: c[2],
+                v_dot_h: c[3],
+            },
+            rgb(base),
+            metallic,
+            roughness,
+        );
         for (k, ours) in channels(ours).into_iter().enumerate() {
             let expected = appendix_b(c, base[k], metallic, roughness);
             worst = worst.max(err(ours, expected, scale(c, roughness, base[k])));
@@ -145,10 +156,12 @@ fn combined_one_minus_f_form_equals_appendix_b_only_at_metallic_0_and_1() {
         let w = (1.0 - c[3]).powi(5);
         let dv = ggx::d(c[2], a) * ggx::v_correlated(c[0], c[1], a);
         let ours = material::metallic_roughness(
-            c[0],
-            c[1],
-            c[2],
-            c[3],
+            Cosines {
+                n_dot_v: c[0],
+                n_dot_l: c[1],
+                n_dot_h: c[2],
+                v_dot_h: c[3],
+            },
             rgb(base),
             metallic,
             roughness,
@@ -191,10 +204,12 @@ fn combined_one_minus_f_form_equals_appendix_b_only_at_metallic_0_and_1() {
     // The gap at the worst case itself.
     let c = [1.0, 1.0, 1.0, 1.0];
     let combined = channels(material::metallic_roughness(
-        1.0,
-        1.0,
-        1.0,
-        1.0,
+        Cosines {
+            n_dot_v: 1.0,
+            n_dot_l: 1.0,
+            n_dot_h: 1.0,
+            v_dot_h: 1.0,
+        },
         V3::splat(1.0),
         0.5,
         0.5,
@@ -296,10 +311,12 @@ fn eval_equals_the_dot_product_form() {
             .with_coupling(coupling);
         let (h, v_dot_h) = brdf::cook_torrance::half_vector(wo, wi);
         let free = material::metallic_roughness(
-            wo.z,
-            wi.z,
-            h.z,
-            v_dot_h,
+            Cosines {
+                n_dot_v: wo.z,
+                n_dot_l: wi.z,
+                n_dot_h: h.z,
+                v_dot_h,
+            },
             rgb(base),
             metallic,
             roughness,

@@ -6,6 +6,7 @@
 //! bound of f64.
 #![cfg(feature = "material")]
 
+use brdf::Cosines;
 use brdf::material::{self, DiffuseCoupling, MetallicRoughness};
 use brdf::wide::{f32x8, f64x4};
 use brdf::{Mask, Real, V3};
@@ -27,10 +28,12 @@ type Inputs = [f64; 10];
 fn free<T: Real>(x: Inputs, c: DiffuseCoupling) -> V3<T> {
     let s = |i: usize| T::splat(x[i]);
     material::metallic_roughness(
-        s(0),
-        s(1),
-        s(2),
-        s(3),
+        Cosines {
+            n_dot_v: s(0),
+            n_dot_l: s(1),
+            n_dot_h: s(2),
+            v_dot_h: s(3),
+        },
         V3::new(s(4), s(5), s(6)),
         s(7),
         s(8),
@@ -107,7 +110,17 @@ fn out_of_domain_parameters_give_nan_from_the_free_functions() {
             assert!(all_nan(free::<f64>(x, c)), "below horizon, input {i} = {v}");
         }
     }
-    let g = material::gltf(0.5, 0.5, 0.9, 0.9, V3::splat(0.5), 1.2, 0.5);
+    let g = material::gltf(
+        Cosines {
+            n_dot_v: 0.5,
+            n_dot_l: 0.5,
+            n_dot_h: 0.9,
+            v_dot_h: 0.9,
+        },
+        V3::splat(0.5),
+        1.2,
+        0.5,
+    );
     assert!(all_nan(g));
 }
 
@@ -291,10 +304,12 @@ fn lanes_equal_scalars_bit_for_bit() {
             let lane8 = |k: usize| f32x8::from_fn(|i| x[i][k] as f32);
             let lane4 = |k: usize| f64x4::from_fn(|i| x[i][k]);
             let v8 = material::metallic_roughness(
-                lane8(0),
-                lane8(1),
-                lane8(2),
-                lane8(3),
+                Cosines {
+                    n_dot_v: lane8(0),
+                    n_dot_l: lane8(1),
+                    n_dot_h: lane8(2),
+                    v_dot_h: lane8(3),
+                },
                 V3::new(lane8(4), lane8(5), lane8(6)),
                 lane8(7),
                 lane8(8),
@@ -302,10 +317,12 @@ fn lanes_equal_scalars_bit_for_bit() {
                 c,
             );
             let v4 = material::metallic_roughness(
-                lane4(0),
-                lane4(1),
-                lane4(2),
-                lane4(3),
+                Cosines {
+                    n_dot_v: lane4(0),
+                    n_dot_l: lane4(1),
+                    n_dot_h: lane4(2),
+                    v_dot_h: lane4(3),
+                },
                 V3::new(lane4(4), lane4(5), lane4(6)),
                 lane4(7),
                 lane4(8),

@@ -13,6 +13,7 @@
 //!
 //! Run with `cargo test --test microfacet_domains -- --nocapture` for the counts.
 
+use brdf::Cosines;
 use brdf::beckmann::{self, Beckmann};
 use brdf::cook_torrance;
 use brdf::ggx::{self, Ggx};
@@ -94,12 +95,30 @@ fn outputs<T: Real>(c1: T, c2: T, alpha: T, u1: T, u2: T) -> Vec<(&'static str, 
         (
             "cook_torrance::ggx",
             NonNeg,
-            cook_torrance::ggx(u1, c1, c2, alpha, u2),
+            cook_torrance::ggx(
+                Cosines {
+                    n_dot_v: c1,
+                    n_dot_l: c2,
+                    n_dot_h: u1,
+                    v_dot_h: u1,
+                },
+                alpha,
+                u2,
+            ),
         ),
         (
             "cook_torrance::beckmann",
             NonNeg,
-            cook_torrance::beckmann(u1, c1, c2, alpha, u2),
+            cook_torrance::beckmann(
+                Cosines {
+                    n_dot_v: c1,
+                    n_dot_l: c2,
+                    n_dot_h: u1,
+                    v_dot_h: u1,
+                },
+                alpha,
+                u2,
+            ),
         ),
         (
             "sampling::reflect_pdf",
@@ -480,9 +499,18 @@ fn nan_inputs<T: Real>() -> usize {
             .all()
     );
     assert!(
-        cook_torrance::ggx(u1, c1, c2, a, T::splat(-0.5))
-            .is_nan()
-            .all()
+        cook_torrance::ggx(
+            Cosines {
+                n_dot_v: c1,
+                n_dot_l: c2,
+                n_dot_h: u1,
+                v_dot_h: u1
+            },
+            a,
+            T::splat(-0.5)
+        )
+        .is_nan()
+        .all()
     );
     assert!(sampling::reflect_pdf(T::splat(-1.0), c1).is_nan().all());
     n += 4;

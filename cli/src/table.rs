@@ -40,9 +40,11 @@
 //! evaluated lane by lane on `f32x8` and `f64x4` (each lane's arguments splat, so the lane
 //! type's own code runs); in `f32` the `f64` functions' results are rounded once.
 
+use brdf::fresnel::ComplexIor;
+use brdf::ibl::energy::{Albedo, AverageAlbedo, Reflectance};
 use brdf::microfacet::{ALPHA_MAX, ALPHA_MIN};
 use brdf::wide::{f32x8, f64x4};
-use brdf::{Mask, ParamError, Real, V3};
+use brdf::{Cosines, Mask, ParamError, Real, V3};
 
 /// Where a scalar argument may lie, or where an output is guaranteed to lie.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -697,6 +699,16 @@ fn pick<T: Real, const N: usize>(x: T, n: usize, f: impl Fn(usize) -> [T; N]) ->
         }
     }
     acc
+}
+
+/// The [`Cosines`] of four named arguments.
+fn cos4<T: Real>(n_dot_v: T, n_dot_l: T, n_dot_h: T, v_dot_h: T) -> Cosines<T> {
+    Cosines {
+        n_dot_v,
+        n_dot_l,
+        n_dot_h,
+        v_dot_h,
+    }
 }
 
 fn v3<T: Real>(x: T, y: T, z: T) -> V3<T> {
@@ -1466,78 +1478,84 @@ pub static KERNELS: &[Kernel] = &[
     kernel!(
         "cook_torrance::ggx",
         "GGX Cook-Torrance D V F from dot products and a given F, Walter et al. 2007; Heitz 2014",
-        [n_dot_h: Domain::COS, n_dot_v: Domain::COS, n_dot_l: Domain::COS, alpha: ALPHA,
+        [n_dot_v: Domain::COS, n_dot_l: Domain::COS, n_dot_h: Domain::COS, v_dot_h: Domain::COS,
+         alpha: ALPHA,
          fresnel: Domain::new(0.0, false, f64::INFINITY, true, "F >= 0, finite")]
             -> [f: Domain::NONNEG],
-        [cook_torrance::ggx(n_dot_h, n_dot_v, n_dot_l, alpha, fresnel)]
+        [cook_torrance::ggx(cos4(n_dot_v, n_dot_l, n_dot_h, v_dot_h), alpha, fresnel)]
     ),
     kernel!(
         "cook_torrance::beckmann",
         "Beckmann Cook-Torrance D G2 F / (4 NoL NoV) from dot products, Walter et al. 2007; \
          Heitz 2014",
-        [n_dot_h: Domain::COS, n_dot_v: Domain::COS, n_dot_l: Domain::COS, alpha: ALPHA,
+        [n_dot_v: Domain::COS, n_dot_l: Domain::COS, n_dot_h: Domain::COS, v_dot_h: Domain::COS,
+         alpha: ALPHA,
          fresnel: Domain::new(0.0, false, f64::INFINITY, true, "F >= 0, finite")]
             -> [f: Domain::NONNEG],
-        [cook_torrance::beckmann(n_dot_h, n_dot_v, n_dot_l, alpha, fresnel)]
+        [cook_torrance::beckmann(cos4(n_dot_v, n_dot_l, n_dot_h, v_dot_h), alpha, fresnel)]
     ),
     kernel!(
         "cook_torrance::ggx_conductor_rgb",
         "Rough conductor, GGX, RGB exact conductor Fresnel, Cook and Torrance 1982; Born and \
          Wolf 14.2",
-        [n_dot_h: Domain::COS, n_dot_v: Domain::COS, n_dot_l: Domain::COS, v_dot_h: Domain::COS,
+        [n_dot_v: Domain::COS, n_dot_l: Domain::COS, n_dot_h: Domain::COS, v_dot_h: Domain::COS,
          alpha: ALPHA, eta_r: ETA, eta_g: ETA, eta_b: ETA, k_r: KAPPA, k_g: KAPPA, k_b: KAPPA]
             -> [f_r: Domain::NONNEG, f_g: Domain::NONNEG, f_b: Domain::NONNEG],
         o3(cook_torrance::ggx_conductor_rgb(
-            n_dot_h, n_dot_v, n_dot_l, v_dot_h, alpha, v3(eta_r, eta_g, eta_b), v3(k_r, k_g, k_b),
+            cos4(n_dot_v, n_dot_l, n_dot_h, v_dot_h),
+            alpha,
+            ComplexIor { eta: v3(eta_r, eta_g, eta_b), k: v3(k_r, k_g, k_b) },
         ))
     ),
     kernel!(
         "cook_torrance::ggx_schlick_rgb",
         "GGX with Schlick's Fresnel of an RGB F0 (glTF, Filament, UE4), Schlick 1994; Walter et \
          al. 2007",
-        [n_dot_h: Domain::COS, n_dot_v: Domain::COS, n_dot_l: Domain::COS, v_dot_h: Domain::COS,
+        [n_dot_v: Domain::COS, n_dot_l: Domain::COS, n_dot_h: Domain::COS, v_dot_h: Domain::COS,
          alpha: ALPHA, f0_r: Domain::UNIT, f0_g: Domain::UNIT, f0_b: Domain::UNIT]
             -> [f_r: Domain::NONNEG, f_g: Domain::NONNEG, f_b: Domain::NONNEG],
         o3(cook_torrance::ggx_schlick_rgb(
-            n_dot_h, n_dot_v, n_dot_l, v_dot_h, alpha, v3(f0_r, f0_g, f0_b),
+            cos4(n_dot_v, n_dot_l, n_dot_h, v_dot_h), alpha, v3(f0_r, f0_g, f0_b),
         ))
     ),
     kernel!(
         "cook_torrance::ggx_dielectric",
         "Rough dielectric reflection, GGX with the exact dielectric Fresnel, Walter et al. 2007; \
          Born and Wolf 1.5",
-        [n_dot_h: Domain::COS, n_dot_v: Domain::COS, n_dot_l: Domain::COS, v_dot_h: Domain::COS,
+        [n_dot_v: Domain::COS, n_dot_l: Domain::COS, n_dot_h: Domain::COS, v_dot_h: Domain::COS,
          alpha: ALPHA, eta: ETA] -> [f: Domain::NONNEG],
-        [cook_torrance::ggx_dielectric(n_dot_h, n_dot_v, n_dot_l, v_dot_h, alpha, eta)]
+        [cook_torrance::ggx_dielectric(cos4(n_dot_v, n_dot_l, n_dot_h, v_dot_h), alpha, eta)]
     ),
     kernel!(
         "cook_torrance::beckmann_conductor_rgb",
         "Rough conductor, Beckmann, RGB exact conductor Fresnel, Walter et al. 2007; Born and \
          Wolf 14.2",
-        [n_dot_h: Domain::COS, n_dot_v: Domain::COS, n_dot_l: Domain::COS, v_dot_h: Domain::COS,
+        [n_dot_v: Domain::COS, n_dot_l: Domain::COS, n_dot_h: Domain::COS, v_dot_h: Domain::COS,
          alpha: ALPHA, eta_r: ETA, eta_g: ETA, eta_b: ETA, k_r: KAPPA, k_g: KAPPA, k_b: KAPPA]
             -> [f_r: Domain::NONNEG, f_g: Domain::NONNEG, f_b: Domain::NONNEG],
         o3(cook_torrance::beckmann_conductor_rgb(
-            n_dot_h, n_dot_v, n_dot_l, v_dot_h, alpha, v3(eta_r, eta_g, eta_b), v3(k_r, k_g, k_b),
+            cos4(n_dot_v, n_dot_l, n_dot_h, v_dot_h),
+            alpha,
+            ComplexIor { eta: v3(eta_r, eta_g, eta_b), k: v3(k_r, k_g, k_b) },
         ))
     ),
     kernel!(
         "cook_torrance::beckmann_schlick_rgb",
         "Beckmann with Schlick's Fresnel of an RGB F0, Schlick 1994; Walter et al. 2007",
-        [n_dot_h: Domain::COS, n_dot_v: Domain::COS, n_dot_l: Domain::COS, v_dot_h: Domain::COS,
+        [n_dot_v: Domain::COS, n_dot_l: Domain::COS, n_dot_h: Domain::COS, v_dot_h: Domain::COS,
          alpha: ALPHA, f0_r: Domain::UNIT, f0_g: Domain::UNIT, f0_b: Domain::UNIT]
             -> [f_r: Domain::NONNEG, f_g: Domain::NONNEG, f_b: Domain::NONNEG],
         o3(cook_torrance::beckmann_schlick_rgb(
-            n_dot_h, n_dot_v, n_dot_l, v_dot_h, alpha, v3(f0_r, f0_g, f0_b),
+            cos4(n_dot_v, n_dot_l, n_dot_h, v_dot_h), alpha, v3(f0_r, f0_g, f0_b),
         ))
     ),
     kernel!(
         "cook_torrance::beckmann_dielectric",
         "Rough dielectric reflection, Beckmann with the exact dielectric Fresnel, Walter et al. \
          2007",
-        [n_dot_h: Domain::COS, n_dot_v: Domain::COS, n_dot_l: Domain::COS, v_dot_h: Domain::COS,
+        [n_dot_v: Domain::COS, n_dot_l: Domain::COS, n_dot_h: Domain::COS, v_dot_h: Domain::COS,
          alpha: ALPHA, eta: ETA] -> [f: Domain::NONNEG],
-        [cook_torrance::beckmann_dielectric(n_dot_h, n_dot_v, n_dot_l, v_dot_h, alpha, eta)]
+        [cook_torrance::beckmann_dielectric(cos4(n_dot_v, n_dot_l, n_dot_h, v_dot_h), alpha, eta)]
     ),
     // ---------------------------------------------------------------- sampling
     kernel!(
@@ -2222,10 +2240,7 @@ pub static KERNELS: &[Kernel] = &[
             -> [f_r: Domain::NONNEG, f_g: Domain::NONNEG, f_b: Domain::NONNEG],
         pick(coupling, 3, |k| {
             o3(material::metallic_roughness(
-                n_dot_v,
-                n_dot_l,
-                n_dot_h,
-                v_dot_h,
+                cos4(n_dot_v, n_dot_l, n_dot_h, v_dot_h),
                 v3(base_color_r, base_color_g, base_color_b),
                 metallic,
                 roughness,
@@ -2243,10 +2258,7 @@ pub static KERNELS: &[Kernel] = &[
          metallic: Domain::UNIT, roughness: Domain::UNIT]
             -> [f_r: Domain::NONNEG, f_g: Domain::NONNEG, f_b: Domain::NONNEG],
         o3(material::gltf(
-            n_dot_v,
-            n_dot_l,
-            n_dot_h,
-            v_dot_h,
+            cos4(n_dot_v, n_dot_l, n_dot_h, v_dot_h),
             v3(base_color_r, base_color_g, base_color_b),
             metallic,
             roughness,
@@ -2558,13 +2570,13 @@ pub static KERNELS: &[Kernel] = &[
         "Multiple-scattering lobe (1 - E_o)(1 - E_i) / (pi (1 - E_avg)), Kulla and Conty 2017; \
          Kelemen and Szirmay-Kalos 2001",
         [e_o: Domain::UNIT, e_i: Domain::UNIT, e_avg: Domain::UNIT] -> [f_ms: Domain::NONNEG],
-        [energy::kulla_conty_lobe(e_o, e_i, e_avg)]
+        [energy::kulla_conty_lobe(Albedo(e_o), Albedo(e_i), AverageAlbedo(e_avg))]
     ),
     kernel!(
         "ibl::energy::kulla_conty_fresnel",
         "Multiple-scattering Fresnel F_avg^2 E_avg / (1 - F_avg (1 - E_avg)), Kulla and Conty 2017",
         [f_avg: Domain::UNIT, e_avg: Domain::UNIT] -> [f_ms: Domain::UNIT],
-        [energy::kulla_conty_fresnel(f_avg, e_avg)]
+        [energy::kulla_conty_fresnel(Reflectance(f_avg), AverageAlbedo(e_avg))]
     ),
     kernel!(
         "ibl::energy::fresnel_avg_schlick",
@@ -2600,14 +2612,14 @@ pub static KERNELS: &[Kernel] = &[
         "Energy-compensation factor 1 + F (1 - E) / E, Turquin 2019 eqs. 14 and 16",
         [e: Domain::new(0.0, true, 1.0, false, "(0, 1]"), f: Domain::UNIT]
             -> [scale: Domain::new(1.0, false, f64::INFINITY, true, "[1, 1 / e]")],
-        [energy::turquin_scale(e, f)]
+        [energy::turquin_scale(Albedo(e), Reflectance(f))]
     ),
     kernel!(
         "ibl::energy::fdez_aguera_ms",
         "Split-sum multiple-scattering term Fms Ems, Fdez-Aguera 2019 (JCGT 8(1)) Listing 1",
         [fss_ess: Domain::UNIT, e_ss: Domain::UNIT,
          f_avg: Domain::UNIT] -> [fms_ems: Domain::NONNEG],
-        [energy::fdez_aguera_ms(fss_ess, e_ss, f_avg)]
+        [energy::fdez_aguera_ms(fss_ess, Albedo(e_ss), Reflectance(f_avg))]
     ),
     kernel!(
         "ibl::energy::fdez_aguera",

@@ -14,7 +14,7 @@
 use crate::textbook;
 use brdf::ibl::dfg;
 use brdf::wide::f32x8;
-use brdf::{Real, V3, batch, beckmann, diffuse, fresnel, ggx, material, phong};
+use brdf::{Cosines, Real, V3, batch, beckmann, diffuse, fresnel, ggx, material, phong};
 use std::hint::black_box;
 use std::sync::OnceLock;
 use std::time::Instant;
@@ -641,10 +641,12 @@ pub fn families() -> Vec<Family> {
             },
             reference: |x| {
                 let c = material::gltf(
-                    x[0],
-                    x[1],
-                    x[2],
-                    x[3],
+                    Cosines {
+                        n_dot_v: x[0],
+                        n_dot_l: x[1],
+                        n_dot_h: x[2],
+                        v_dot_h: x[3],
+                    },
                     V3::new(x[4], 0.5 * x[4], 0.25),
                     x[5],
                     x[6],
@@ -659,15 +661,14 @@ pub fn families() -> Vec<Family> {
                     false,
                     [v = 0, l = 1, h = 2, vh = 3, b = 4, m = 5, r = 6],
                     |T| {
-                        let c = material::gltf(
-                            v,
-                            l,
-                            h,
-                            vh,
-                            V3::new(b, T::HALF * b, T::splat(0.25)),
-                            m,
-                            r,
-                        );
+                        let cosines = Cosines {
+                            n_dot_v: v,
+                            n_dot_l: l,
+                            n_dot_h: h,
+                            v_dot_h: vh,
+                        };
+                        let c =
+                            material::gltf(cosines, V3::new(b, T::HALF * b, T::splat(0.25)), m, r);
                         [c.x, c.y, c.z]
                     }
                 ),

@@ -99,6 +99,23 @@ use crate::real::Real;
 use crate::sampling::ggx_vndf_spherical_cap;
 use crate::vec3::V3;
 
+/// A directional albedo E(mu): the fraction of light a lobe reflects from one direction,
+/// integrated over the hemisphere, here with F = 1 ([`e_ggx`], the A + B of a DFG table).
+/// A named wrapper, so the energy terms below cannot be passed in each other's place:
+/// `turquin_scale(Albedo(e), Reflectance(f0))` compiles, the swapped call does not.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Albedo<T>(pub T);
+
+/// The cosine-weighted hemispherical average E_avg = 2 integral_0^1 E(mu) mu dmu of a
+/// directional albedo ([`e_avg_ggx`]). A named wrapper, as [`Albedo`].
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct AverageAlbedo<T>(pub T);
+
+/// A Fresnel reflectance: F0, F90, or the hemispherical average F_avg
+/// ([`fresnel_avg_schlick`], [`fresnel_avg_conductor`]). A named wrapper, as [`Albedo`].
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Reflectance<T>(pub T);
+
 /// Side of the built-in tables: [`E_GGX_TABLE`] is `E_TABLE_SIZE` x `E_TABLE_SIZE`,
 /// [`E_AVG_GGX_TABLE`] has `E_TABLE_SIZE` entries (grid in the module docs).
 pub const E_TABLE_SIZE: usize = 32;
@@ -324,7 +341,8 @@ pub fn e_avg_ggx<T: Real>(alpha: T) -> T {
 /// Imageworks".
 #[inline]
 #[must_use]
-pub fn kulla_conty_lobe<T: Real>(e_o: T, e_i: T, e_avg: T) -> T {
+pub fn kulla_conty_lobe<T: Real>(e_o: Albedo<T>, e_i: Albedo<T>, e_avg: AverageAlbedo<T>) -> T {
+    let (e_o, e_i, e_avg) = (e_o.0, e_i.0, e_avg.0);
     let num = (T::ONE - e_o) * (T::ONE - e_i);
     let den = T::PI * (T::ONE - e_avg);
     let v = T::select(
@@ -348,7 +366,8 @@ pub fn kulla_conty_lobe<T: Real>(e_o: T, e_i: T, e_avg: T) -> T {
 /// Based Shading at Imageworks", slide "Fresnel".
 #[inline]
 #[must_use]
-pub fn kulla_conty_fresnel<T: Real>(f_avg: T, e_avg: T) -> T {
+pub fn kulla_conty_fresnel<T: Real>(f_avg: Reflectance<T>, e_avg: AverageAlbedo<T>) -> T {
+    let (f_avg, e_avg) = (f_avg.0, e_avg.0);
     let den = T::ONE - f_avg * (T::ONE - e_avg);
     let v = T::select(den.simd_gt(T::ZERO), f_avg * f_avg * e_avg / den, T::ONE);
     // F_ms <= F_avg <= 1, but at F_avg = 1 the quotient E_avg / (1 - (1 - E_avg)) rounds up to
@@ -401,8 +420,12 @@ pub fn fresnel_avg_conductor(eta: f64, k: f64) -> f64 {
 #[must_use]
 pub fn kulla_conty_ggx<T: Real>(n_dot_v: T, n_dot_l: T, alpha: T, f_avg: T) -> T {
     let e_avg = e_avg_ggx(alpha);
-    let lobe = kulla_conty_lobe(e_ggx(n_dot_v, alpha), e_ggx(n_dot_l, alpha), e_avg);
-    let v = kulla_conty_fresnel(f_avg, e_avg) * lobe;
+    let lobe = kulla_conty_lobe(
+        Albedo(e_ggx(n_dot_v, alpha)),
+        Albedo(e_ggx(n_dot_l, alpha)),
+        AverageAlbedo(e_avg),
+    );
+    let v = kulla_conty_fresnel(Reflectance(f_avg), AverageAlbedo(e_avg)) * lobe;
     // An invalid alpha or f_avg gives NaN below the horizon too (the crate's bad-input rule).
     let params_ok = e_avg.simd_ge(T::ZERO) & in_unit(f_avg);
     nan_unless(params_ok, above_horizon(n_dot_v, n_dot_l, v))
@@ -415,9 +438,14 @@ pub fn kulla_conty_ggx<T: Real>(n_dot_v: T, n_dot_l: T, alpha: T, f_avg: T) -> T
 #[must_use]
 pub fn kulla_conty_ggx_rgb<T: Real>(n_dot_v: T, n_dot_l: T, alpha: T, f_avg: V3<T>) -> V3<T> {
     let e_avg = e_avg_ggx(alpha);
-    let lobe = kulla_conty_lobe(e_ggx(n_dot_v, alpha), e_ggx(n_dot_l, alpha), e_avg);
+    let lobe = kulla_conty_lobe(
+        Albedo(e_ggx(n_dot_v, alpha)),
+        Albedo(e_ggx(n_dot_l, alpha)),
+        AverageAlbedo(e_avg),
+    );
     let ch = |f: T| {
-        let v = above_horizon(n_dot_v, n_dot_l, kulla_conty_fresnel(f, e_avg) * lobe);
+        let fms = kulla_conty_fresnel(Reflectance(f), AverageAlbedo(e_avg));
+        let v = above_horizon(n_dot_v, n_dot_l, fms * lobe);
         // An invalid alpha or f_avg gives NaN below the horizon too.
         nan_unless(e_avg.simd_ge(T::ZERO) & in_unit(f), v)
     };
@@ -435,9 +463,30 @@ pub fn kulla_conty_ggx_rgb<T: Real>(n_dot_v: T, n_dot_l: T, alpha: T, f_avg: V3<
 /// Domain: e in (0, 1], f in [0, 1]; e <= 0 or > 1, f outside [0, 1], and NaN give NaN.
 /// Output in [1, 1 / e], capped at the largest finite value (e below 1 / MAX); f = 0 gives
 /// exactly 1 for every e.
+///
+/// The two arguments are wrapped so that they cannot be swapped (swapped, the call used to
+/// return a plausible 1):
+///
+/// ```
+/// use brdf::ibl::energy::{Albedo, Reflectance, e_ggx, turquin_scale};
+/// let e = e_ggx(1.0_f64, 1.0); // alpha = 1, normal incidence: E = 0.307
+/// let s = turquin_scale(Albedo(e), Reflectance(1.0));
+/// assert!((e * s - 1.0).abs() < 1e-12); // the compensated albedo of a white lobe is 1
+/// ```
+///
+/// ```compile_fail
+/// use brdf::ibl::energy::{Albedo, Reflectance, turquin_scale};
+/// let s = turquin_scale(Reflectance(1.0_f64), Albedo(0.307)); // does not compile
+/// ```
+///
+/// ```compile_fail
+/// use brdf::ibl::energy::turquin_scale;
+/// let s = turquin_scale(1.0_f64, 0.307); // neither do bare floats
+/// ```
 #[inline]
 #[must_use]
-pub fn turquin_scale<T: Real>(e: T, f: T) -> T {
+pub fn turquin_scale<T: Real>(e: Albedo<T>, f: Reflectance<T>) -> T {
+    let (e, f) = (e.0, f.0);
     let ok = e.simd_gt(T::ZERO) & e.simd_le(T::ONE) & in_unit(f);
     // (1 - e) / e overflows to +inf for e below 1 / MAX; capped first, so f = 0 gives
     // 0 * MAX + 1 = 1 instead of 0 * inf = NaN.
@@ -456,7 +505,8 @@ pub fn turquin_scale<T: Real>(e: T, f: T) -> T {
 /// F_avg = 1 (0 / 0) it returns 0.
 #[inline]
 #[must_use]
-pub fn fdez_aguera_ms<T: Real>(fss_ess: T, e_ss: T, f_avg: T) -> T {
+pub fn fdez_aguera_ms<T: Real>(fss_ess: T, e_ss: Albedo<T>, f_avg: Reflectance<T>) -> T {
+    let (e_ss, f_avg) = (e_ss.0, f_avg.0);
     let e_ms = T::ONE - e_ss;
     let den = T::ONE - e_ms * f_avg;
     let v = T::select(den.simd_gt(T::ZERO), fss_ess * f_avg * e_ms / den, T::ZERO);
@@ -477,7 +527,11 @@ pub fn fdez_aguera<T: Real>(a: T, b: T, f0: T) -> (T, T) {
     let ok = a.simd_ge(T::ZERO) & b.simd_ge(T::ZERO) & (a + b).simd_le(T::ONE) & in_unit(f0);
     let fss_ess = nan_unless(ok, f0.mul_add(a, b));
     let e_ss = a + b;
-    let ms = fdez_aguera_ms(fss_ess, e_ss, fresnel_avg_schlick(f0, T::ONE));
+    let ms = fdez_aguera_ms(
+        fss_ess,
+        Albedo(e_ss),
+        Reflectance(fresnel_avg_schlick(f0, T::ONE)),
+    );
     (fss_ess, nan_unless(ok, ms))
 }
 

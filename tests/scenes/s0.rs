@@ -3,11 +3,11 @@
 //! by `tests/ibl_seed_s0.rs` and the report's IBL section.
 #![allow(dead_code)]
 
-use brdf::V3;
 use brdf::frame::Frame;
 use brdf::ibl::{dfg, irradiance, prefilter};
 use brdf::material::{DiffuseCoupling, metallic_roughness};
 use brdf::microfacet::alpha_from_perceptual;
+use brdf::{Cosines, V3};
 
 pub type C = V3<f64>;
 
@@ -109,11 +109,14 @@ pub fn reference(s: &Surface, l_env: fn(C) -> C, nt: usize) -> C {
             let phi = (j as f64 + 0.5) / np as f64 * core::f64::consts::TAU;
             let l = frame.to_world(V3::new(sin * phi.cos(), sin * phi.sin(), mu));
             let h = normalize(s.v + l);
-            let f = metallic_roughness(
+            let cosines = Cosines {
                 n_dot_v,
-                mu,
-                s.n.dot(h),
-                s.v.dot(h),
+                n_dot_l: mu,
+                n_dot_h: s.n.dot(h),
+                v_dot_h: s.v.dot(h),
+            };
+            let f = metallic_roughness(
+                cosines,
                 s.base,
                 s.metallic,
                 s.roughness,

@@ -5,12 +5,14 @@
 
 use brdf::beckmann::{self, Beckmann};
 use brdf::frame::{self, Frame};
+use brdf::fresnel::ComplexIor;
 use brdf::ggx::{self, Ggx};
+use brdf::ibl::energy::{Albedo, AverageAlbedo, Reflectance};
 use brdf::ibl::{dfg, energy, irradiance, prefilter};
 use brdf::material::{self, DiffuseCoupling, MetallicRoughness};
 use brdf::microfacet::{self, Microfacet};
 use brdf::tonemap::{self, AgxLook, HableParams, LottesParams, Operator, UchimuraParams};
-use brdf::{Real, V3, color, cook_torrance, diffuse, fresnel, lights, phong, sampling};
+use brdf::{Cosines, Real, V3, color, cook_torrance, diffuse, fresnel, lights, phong, sampling};
 
 /// The scalar types the tests call `direct` with.
 pub trait Scalar: Real<Scalar = Self> + Into<f64> {}
@@ -19,6 +21,16 @@ impl Scalar for f64 {}
 
 fn v<T: Scalar>(a: &[T], i: usize) -> V3<T> {
     V3::new(a[i], a[i + 1], a[i + 2])
+}
+
+/// The shading cosines n.v, n.l, n.h, v.h at `a[i..i + 4]` (the crate's one order).
+fn c<T: Scalar>(a: &[T], i: usize) -> Cosines<T> {
+    Cosines {
+        n_dot_v: a[i],
+        n_dot_l: a[i + 1],
+        n_dot_h: a[i + 2],
+        v_dot_h: a[i + 3],
+    }
 }
 
 fn f<T: Scalar>(x: T) -> f64 {
@@ -212,51 +224,35 @@ pub fn direct<T: Scalar>(path: &str, a: &[T]) -> Option<Vec<T>> {
                 |_| fr,
             ))
         }
-        "cook_torrance::ggx" => vec![cook_torrance::ggx(a[0], a[1], a[2], a[3], a[4])],
-        "cook_torrance::beckmann" => vec![cook_torrance::beckmann(a[0], a[1], a[2], a[3], a[4])],
+        "cook_torrance::ggx" => vec![cook_torrance::ggx(c(a, 0), a[4], a[5])],
+        "cook_torrance::beckmann" => vec![cook_torrance::beckmann(c(a, 0), a[4], a[5])],
         "cook_torrance::ggx_conductor_rgb" => three(cook_torrance::ggx_conductor_rgb(
-            a[0],
-            a[1],
-            a[2],
-            a[3],
+            c(a, 0),
             a[4],
-            v(a, 5),
-            v(a, 8),
+            ComplexIor {
+                eta: v(a, 5),
+                k: v(a, 8),
+            },
         )),
-        "cook_torrance::ggx_schlick_rgb" => three(cook_torrance::ggx_schlick_rgb(
-            a[0],
-            a[1],
-            a[2],
-            a[3],
-            a[4],
-            v(a, 5),
-        )),
+        "cook_torrance::ggx_schlick_rgb" => {
+            three(cook_torrance::ggx_schlick_rgb(c(a, 0), a[4], v(a, 5)))
+        }
         "cook_torrance::ggx_dielectric" => {
-            vec![cook_torrance::ggx_dielectric(
-                a[0], a[1], a[2], a[3], a[4], a[5],
-            )]
+            vec![cook_torrance::ggx_dielectric(c(a, 0), a[4], a[5])]
         }
         "cook_torrance::beckmann_conductor_rgb" => three(cook_torrance::beckmann_conductor_rgb(
-            a[0],
-            a[1],
-            a[2],
-            a[3],
+            c(a, 0),
             a[4],
-            v(a, 5),
-            v(a, 8),
+            ComplexIor {
+                eta: v(a, 5),
+                k: v(a, 8),
+            },
         )),
-        "cook_torrance::beckmann_schlick_rgb" => three(cook_torrance::beckmann_schlick_rgb(
-            a[0],
-            a[1],
-            a[2],
-            a[3],
-            a[4],
-            v(a, 5),
-        )),
+        "cook_torrance::beckmann_schlick_rgb" => {
+            three(cook_torrance::beckmann_schlick_rgb(c(a, 0), a[4], v(a, 5)))
+        }
         "cook_torrance::beckmann_dielectric" => {
-            vec![cook_torrance::beckmann_dielectric(
-                a[0], a[1], a[2], a[3], a[4], a[5],
-            )]
+            vec![cook_torrance::beckmann_dielectric(c(a, 0), a[4], a[5])]
         }
         "sampling::cosine_hemisphere" => sample(sampling::cosine_hemisphere(a[0], a[1])),
         "sampling::cosine_hemisphere_pdf" => vec![sampling::cosine_hemisphere_pdf(v(a, 0))],
@@ -502,10 +498,7 @@ pub fn direct<T: Scalar>(path: &str, a: &[T]) -> Option<Vec<T>> {
                 c => panic!("no coupling {c}"),
             };
             three(material::metallic_roughness(
-                a[0],
-                a[1],
-                a[2],
-                a[3],
+                c(a, 0),
                 v(a, 4),
                 a[7],
                 a[8],
@@ -513,7 +506,7 @@ pub fn direct<T: Scalar>(path: &str, a: &[T]) -> Option<Vec<T>> {
                 coupling,
             ))
         }
-        "material::gltf" => three(material::gltf(a[0], a[1], a[2], a[3], v(a, 4), a[7], a[8])),
+        "material::gltf" => three(material::gltf(c(a, 0), v(a, 4), a[7], a[8])),
         "material::MetallicRoughness::eval" => three(mr(a).eval(v(a, 5), v(a, 8))),
         "material::MetallicRoughness::specular_probability" => {
             vec![mr(a).specular_probability(v(a, 5))]
@@ -560,8 +553,15 @@ pub fn direct<T: Scalar>(path: &str, a: &[T]) -> Option<Vec<T>> {
         "ibl::prefilter::mip_level" => vec![prefilter::mip_level(a[0], a[1], a[2])],
         "ibl::energy::e_ggx" => vec![energy::e_ggx(a[0], a[1])],
         "ibl::energy::e_avg_ggx" => vec![energy::e_avg_ggx(a[0])],
-        "ibl::energy::kulla_conty_lobe" => vec![energy::kulla_conty_lobe(a[0], a[1], a[2])],
-        "ibl::energy::kulla_conty_fresnel" => vec![energy::kulla_conty_fresnel(a[0], a[1])],
+        "ibl::energy::kulla_conty_lobe" => vec![energy::kulla_conty_lobe(
+            Albedo(a[0]),
+            Albedo(a[1]),
+            AverageAlbedo(a[2]),
+        )],
+        "ibl::energy::kulla_conty_fresnel" => vec![energy::kulla_conty_fresnel(
+            Reflectance(a[0]),
+            AverageAlbedo(a[1]),
+        )],
         "ibl::energy::fresnel_avg_schlick" => vec![energy::fresnel_avg_schlick(a[0], a[1])],
         "ibl::energy::fresnel_avg_conductor" => {
             vec![T::splat(energy::fresnel_avg_conductor(f(a[0]), f(a[1])))]
@@ -570,8 +570,14 @@ pub fn direct<T: Scalar>(path: &str, a: &[T]) -> Option<Vec<T>> {
         "ibl::energy::kulla_conty_ggx_rgb" => {
             three(energy::kulla_conty_ggx_rgb(a[0], a[1], a[2], v(a, 3)))
         }
-        "ibl::energy::turquin_scale" => vec![energy::turquin_scale(a[0], a[1])],
-        "ibl::energy::fdez_aguera_ms" => vec![energy::fdez_aguera_ms(a[0], a[1], a[2])],
+        "ibl::energy::turquin_scale" => {
+            vec![energy::turquin_scale(Albedo(a[0]), Reflectance(a[1]))]
+        }
+        "ibl::energy::fdez_aguera_ms" => vec![energy::fdez_aguera_ms(
+            a[0],
+            Albedo(a[1]),
+            Reflectance(a[2]),
+        )],
         "ibl::energy::fdez_aguera" => {
             let (s, m) = energy::fdez_aguera(a[0], a[1], a[2]);
             vec![s, m]

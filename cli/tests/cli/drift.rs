@@ -473,6 +473,16 @@ fn param(
                 .collect(),
         )],
         "implFn(T)->T" => vec![plain(vec![name.to_string()])],
+        // A shading point's cosines, in the crate's one order.
+        "Cosines<T>" => vec![plain(
+            ["n_dot_v", "n_dot_l", "n_dot_h", "v_dot_h"]
+                .map(String::from)
+                .to_vec(),
+        )],
+        // A complex IOR with named parts: its eta, then its k.
+        "ComplexIor<V3<T>>" => vec![vector("eta"), vector("k")],
+        // The energy terms' named wrappers: one argument each.
+        "Albedo<T>" | "AverageAlbedo<T>" | "Reflectance<T>" => vec![plain(vec![name.to_string()])],
         "implFn(T)->V3<T>" => vec![vector(name)],
         _ => {
             let ty_name = type_name(ty).ok_or_else(|| format!("parameter {name}: type {text}"))?;
@@ -885,6 +895,38 @@ const EXCLUDED: &[(&str, &str)] = &[
     (
         "tonemap::Operator::apply_vec3a",
         "glam wrapper of tonemap::Operator::apply",
+    ),
+    (
+        "material::MetallicRoughness::eval_world",
+        "world-space wrapper: MetallicRoughness::eval(sp.wo(), sp.local(l)), which is in the table",
+    ),
+    (
+        "material::MetallicRoughness::pdf_world",
+        "world-space wrapper: MetallicRoughness::pdf(sp.wo(), sp.local(l)), which is in the table",
+    ),
+    (
+        "material::MetallicRoughness::sample_world",
+        "world-space wrapper: sp.world of MetallicRoughness::sample(sp.wo(), u1, u2), which is in the table",
+    ),
+    (
+        "material::MetallicRoughness::sample_weighted_world",
+        "world-space wrapper: sp.world of MetallicRoughness::sample_weighted(sp.wo(), u1, u2), which is in the table",
+    ),
+    (
+        "shading::ShadingPoint::local",
+        "frame::Frame::to_local of the point's frame, which is in the table",
+    ),
+    (
+        "shading::ShadingPoint::world",
+        "frame::Frame::to_world of the point's frame, which is in the table",
+    ),
+    (
+        "shading::ShadingPoint::cosines",
+        "shading::Cosines::from_local of the point's view and the local light direction",
+    ),
+    (
+        "shading::ShadingPoint::frame",
+        "getter of the point's frame",
     ),
     ("vec3::V3::map", "applies a caller's closure per component"),
     (
