@@ -52,6 +52,7 @@
 //! | [`real`] | [`Real`]: the float/lane trait, its [`Mask`], lane accuracy bounds | always |
 //! | [`vec3`] | [`V3`]: 3-vector of scalars or lanes (structure of arrays), glam conversions | always |
 //! | [`frame`] | orthonormal basis from a normal, local-frame `cos_theta`/`tan2_theta`/`cos_phi` | always |
+//! | [`shading`] | a shading point's [`Cosines`] (n.v, n.l, n.h, v.h) and world-to-local [`ShadingPoint`]; the crate's one argument order | always |
 //! | [`error`] | [`ParamError`], returned by parameter constructors | always |
 //! | [`batch`] | any kernel over structure-of-arrays slices, 8 `f32` / 4 `f64` at a time | always |
 //! | `fresnel` | Schlick (+F90, SG), exact dielectric and polarized, conductor, F82 tint | `fresnel` |
@@ -61,6 +62,7 @@
 //! | `cook_torrance` | D G F / (4 NoL NoV) evaluated through V | `cook-torrance` |
 //! | `diffuse` | Lambert, Oren-Nayar (qualitative, full, Fujii, EON), Burley, diffuse-Fresnel couplings | `diffuse` |
 //! | `phong` | classic, modified and normalized Phong, Blinn-Phong | `phong` |
+//! | `engine` | three.js, Filament, bevy, Unreal Engine 4 and glTF-viewer conventions (roughness floor, Fresnel and F90, visibility guard, diffuse weight) as data, evaluated with the crate's kernels | `engine` |
 //! | `material` | the glTF / Filament metallic-roughness BRDF, its parameters and lobe sampling | `material` |
 //! | `lights` | punctual light radiance, distance attenuation, spot cones | `lights` |
 //! | `sampling` | cosine hemisphere, D cos sampling, visible normals, pdfs | `sampling` |
@@ -108,6 +110,7 @@ pub mod batch;
 pub mod error;
 pub mod frame;
 pub mod real;
+pub mod shading;
 pub mod vec3;
 
 #[cfg(feature = "beckmann")]
@@ -122,6 +125,8 @@ pub mod diffuse;
 mod domain;
 #[allow(dead_code)] // each feature uses a subset of the double-word arithmetic
 mod dw;
+#[cfg(feature = "engine")]
+pub mod engine;
 #[cfg(feature = "fresnel")]
 pub mod fresnel;
 #[cfg(feature = "ggx")]
@@ -148,6 +153,7 @@ pub use error::ParamError;
 /// The vector math crate whose `Vec3`/`DVec3` convert to [`V3`].
 pub use glam;
 pub use real::{Mask, Real};
+pub use shading::{Cosines, ShadingPoint};
 pub use vec3::V3;
 /// The SIMD crate whose `f32x8` and `f64x4` implement [`Real`].
 pub use wide;

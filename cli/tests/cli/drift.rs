@@ -13,7 +13,7 @@ use syn::{FnArg, GenericParam, ImplItem, Item, Pat, Signature, TraitItem, Type};
 
 /// Types whose values are one integer argument naming a choice (an enum or a set of
 /// constants), by type name.
-const CHOICE_TYPES: &[&str] = &["AgxLook", "DiffuseCoupling", "Operator"];
+const CHOICE_TYPES: &[&str] = &["AgxLook", "Convention", "DiffuseCoupling", "Operator"];
 
 /// One parsed source file and the module path its public items have.
 struct Source {
@@ -462,6 +462,13 @@ fn param(
     Ok(match inner {
         "T" | "f64" | "f32" => vec![plain(vec![name.to_string()])],
         "V3<T>" => vec![vector(name)],
+        // The four cosines of a shading point, by field, in the crate's one order.
+        "Cosines<T>" => vec![plain(
+            ["n_dot_v", "n_dot_l", "n_dot_h", "v_dot_h"]
+                .iter()
+                .map(ToString::to_string)
+                .collect(),
+        )],
         "Mat3" => vec![plain(
             (0..3)
                 .flat_map(|i| (0..3).map(move |j| format!("{name}_{i}_{j}")))
@@ -885,6 +892,19 @@ const EXCLUDED: &[(&str, &str)] = &[
     (
         "tonemap::Operator::apply_vec3a",
         "glam wrapper of tonemap::Operator::apply",
+    ),
+    (
+        "shading::ShadingPoint::cosines",
+        "returns a Cosines value; the same bits as Cosines::from_local(wo, local(l))",
+    ),
+    ("shading::ShadingPoint::frame", "accessor of the frame"),
+    (
+        "shading::ShadingPoint::local",
+        "frame::Frame::to_local of the stored frame (same bits)",
+    ),
+    (
+        "shading::ShadingPoint::world",
+        "frame::Frame::to_world of the stored frame (same bits)",
     ),
     ("vec3::V3::map", "applies a caller's closure per component"),
     (
