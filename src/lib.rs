@@ -64,6 +64,7 @@
 //! | `cook_torrance` | D G F / (4 NoL NoV) evaluated through V | `cook-torrance` |
 //! | `diffuse` | Lambert, Oren-Nayar (qualitative, full, Fujii, EON), Burley, diffuse-Fresnel couplings | `diffuse` |
 //! | `phong` | classic, modified and normalized Phong, Blinn-Phong | `phong` |
+//! | `engine` | three.js, Filament, bevy, Unreal Engine 4 and glTF-viewer conventions (roughness floor, Fresnel and F90, visibility guard, diffuse weight) as data, evaluated with the crate's kernels | `engine` |
 //! | `material` | the glTF / Filament metallic-roughness BRDF, its parameters and lobe sampling | `material` |
 //! | `lights` | punctual light radiance, distance attenuation, spot cones | `lights` |
 //! | `sampling` | cosine hemisphere, D cos sampling, visible normals, pdfs | `sampling` |
@@ -126,6 +127,8 @@ pub mod diffuse;
 mod domain;
 #[allow(dead_code)] // each feature uses a subset of the double-word arithmetic
 mod dw;
+#[cfg(feature = "engine")]
+pub mod engine;
 #[cfg(feature = "fresnel")]
 pub mod fresnel;
 #[cfg(feature = "ggx")]

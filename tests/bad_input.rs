@@ -29,7 +29,8 @@
         feature = "diffuse",
         feature = "phong",
         feature = "material",
-        feature = "lights"
+        feature = "lights",
+        feature = "engine"
     )),
     allow(dead_code, unused_imports)
 )]
@@ -194,7 +195,77 @@ fn table<T: Real>() -> Vec<Kernel<T>> {
     lights_rows(&mut t);
     #[cfg(feature = "ibl")]
     ibl_rows(&mut t);
+    #[cfg(feature = "engine")]
+    engine_rows(&mut t);
     t
+}
+
+/// `engine::Convention`'s methods, for each of the five conventions.
+#[cfg(feature = "engine")]
+fn engine_rows<T: Real>(t: &mut Vec<Kernel<T>>) {
+    use brdf::Cosines;
+    let cosines = || {
+        vec![
+            c("n_dot_v", NV),
+            c("n_dot_l", NL),
+            c("n_dot_h", NH),
+            c("v_dot_h", VH),
+        ]
+    };
+    let cs = |x: &[T]| Cosines {
+        n_dot_v: x[0],
+        n_dot_l: x[1],
+        n_dot_h: x[2],
+        v_dot_h: x[3],
+    };
+    for e in brdf::engine::ALL {
+        let n = e.name;
+        t.push(k(
+            &format!("Convention::alpha({n})"),
+            vec![p("perceptual_roughness", 0.5, &UNIT_BAD)],
+            move |x| vec![e.alpha(x[0])],
+        ));
+        t.push(k(
+            &format!("Convention::f90({n})"),
+            vec![rgb("f0", [0.04, 0.5, 0.9], &UNIT_BAD)],
+            move |x| vec![e.f90(v3(x, 0))],
+        ));
+        t.push(k(
+            &format!("Convention::fresnel({n})"),
+            vec![
+                rgb("f0", [0.04, 0.5, 0.9], &UNIT_BAD),
+                p("f90", 1.0, &UNIT_BAD),
+                c("v_dot_h", VH),
+            ],
+            move |x| o3(e.fresnel(v3(x, 0), x[3], x[4])),
+        ));
+        let mut a = cosines();
+        a.extend([
+            p("roughness", 0.5, &UNIT_BAD),
+            rgb("f0", [0.04, 0.5, 0.9], &UNIT_BAD),
+            p("f90", 1.0, &UNIT_BAD),
+        ]);
+        t.push(k(&format!("Convention::specular({n})"), a, move |x| {
+            o3(e.specular(cs(x), x[4], v3(x, 5), x[8]))
+        }));
+        let mut a = cosines();
+        a.extend([
+            p("roughness", 0.5, &UNIT_BAD),
+            rgb("diffuse_color", [0.9, 0.6, 0.3], &UNIT_BAD),
+        ]);
+        t.push(k(&format!("Convention::diffuse({n})"), a, move |x| {
+            o3(e.diffuse(cs(x), x[4], v3(x, 5)))
+        }));
+        let mut a = cosines();
+        a.extend([
+            rgb("base_color", [0.9, 0.6, 0.3], &UNIT_BAD),
+            p("metallic", 0.5, &UNIT_BAD),
+            p("roughness", 0.5, &UNIT_BAD),
+        ]);
+        t.push(k(&format!("Convention::brdf({n})"), a, move |x| {
+            o3(e.brdf(cs(x), v3(x, 4), x[7], x[8]))
+        }));
+    }
 }
 
 /// `ibl::dfg` and `ibl::energy` (`ibl::irradiance` and `ibl::prefilter` below them).
@@ -2322,6 +2393,7 @@ const SOURCES: &[(&str, &str)] = &[
     ("ggx", include_str!("../src/ggx.rs")),
     ("lights", include_str!("../src/lights.rs")),
     ("material", include_str!("../src/material.rs")),
+    ("engine", include_str!("../src/engine.rs")),
     ("microfacet", include_str!("../src/microfacet.rs")),
     ("phong", include_str!("../src/phong.rs")),
     ("sampling", include_str!("../src/sampling.rs")),
@@ -2424,7 +2496,8 @@ fn public_functions() -> Vec<String> {
     feature = "diffuse",
     feature = "phong",
     feature = "material",
-    feature = "lights"
+    feature = "lights",
+    feature = "engine"
 ))]
 #[test]
 fn every_public_function_is_in_the_table_or_named_as_not_a_kernel() {

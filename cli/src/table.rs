@@ -19,6 +19,10 @@
 //!   shared constructor arguments `alpha_x`, `alpha_y`;
 //! - an enumerated parameter (an AgX look, a diffuse coupling, the receiver of
 //!   `tonemap::Operator::apply`) is one integer argument whose domain lists the choices;
+//! - a `Cosines<T>` parameter `c` is four arguments `n_dot_v`, `n_dot_l`, `n_dot_h`, `v_dot_h`
+//!   (its fields, in the crate's one cosine order);
+//! - the receiver of `engine::Convention`'s methods is one integer argument `convention`, an
+//!   index into `engine::ALL` ([`CONVENTION`]), like the other enumerated parameters;
 //! - a colour matrix `m: &Mat3` is nine arguments `m_0_0`, `m_0_1`, ..., `m_2_2` (row-major);
 //! - a Fresnel closure `fresnel: impl Fn(T) -> T` (or `-> V3<T>`) is the constant it returns,
 //!   `fresnel` (or `fresnel_r`, `fresnel_g`, `fresnel_b`);
@@ -471,6 +475,12 @@ pub const CONSTRUCTORS: &[(&str, &str)] = &[
 pub const MODEL: Domain = Domain::choice(2, "0 = ggx::Ggx, 1 = beckmann::Beckmann");
 /// The `coupling` argument of `material::metallic_roughness` (`material::DiffuseCoupling`).
 pub const COUPLING: Domain = Domain::choice(3, "0 = Gltf, 1 = OneMinusF, 2 = Additive");
+/// The `convention` argument of `engine::Convention`'s methods: an index into `engine::ALL`.
+pub const CONVENTION: Domain = Domain::choice(
+    5,
+    "index into engine::ALL: 0 = THREE_JS, 1 = FILAMENT, 2 = BEVY, 3 = UNREAL_4, \
+     4 = KHRONOS_SAMPLE_VIEWER",
+);
 /// The `look` argument of the AgX operators (`tonemap::AgxLook`'s constants).
 pub const LOOK: Domain = Domain::choice(4, "0 = BASE, 1 = PUNCHY, 2 = GOLDEN, 3 = GOLDEN_FILAMENT");
 /// The `operator` argument of `tonemap::Operator::apply`: an index into `Operator::all()`.
@@ -701,16 +711,6 @@ fn pick<T: Real, const N: usize>(x: T, n: usize, f: impl Fn(usize) -> [T; N]) ->
     acc
 }
 
-/// The [`Cosines`] of four named arguments.
-fn cos4<T: Real>(n_dot_v: T, n_dot_l: T, n_dot_h: T, v_dot_h: T) -> Cosines<T> {
-    Cosines {
-        n_dot_v,
-        n_dot_l,
-        n_dot_h,
-        v_dot_h,
-    }
-}
-
 fn v3<T: Real>(x: T, y: T, z: T) -> V3<T> {
     V3::new(x, y, z)
 }
@@ -782,6 +782,7 @@ macro_rules! le {
 
 use brdf::beckmann::{self, Beckmann};
 use brdf::diffuse;
+use brdf::engine;
 use brdf::frame::{self, Frame};
 use brdf::ggx::{self, Ggx};
 use brdf::ibl::{dfg, energy, irradiance, prefilter};
@@ -789,6 +790,16 @@ use brdf::material::{self, DiffuseCoupling, MetallicRoughness};
 use brdf::microfacet::{self, Microfacet};
 use brdf::tonemap::{self, AgxLook, HableParams, LottesParams, Operator, UchimuraParams};
 use brdf::{color, cook_torrance, fresnel, lights, phong, sampling};
+
+/// The [`Cosines`] of four flattened arguments.
+fn cosines<T: Real>(n_dot_v: T, n_dot_l: T, n_dot_h: T, v_dot_h: T) -> Cosines<T> {
+    Cosines {
+        n_dot_v,
+        n_dot_l,
+        n_dot_h,
+        v_dot_h,
+    }
+}
 
 /// Both distributions on the same alphas, for kernels generic over `Microfacet`: choice
 /// `model` of [`MODEL`] evaluated through `f`, NaN if the alphas are out of their domain.
@@ -1482,7 +1493,7 @@ pub static KERNELS: &[Kernel] = &[
          alpha: ALPHA,
          fresnel: Domain::new(0.0, false, f64::INFINITY, true, "F >= 0, finite")]
             -> [f: Domain::NONNEG],
-        [cook_torrance::ggx(cos4(n_dot_v, n_dot_l, n_dot_h, v_dot_h), alpha, fresnel)]
+        [cook_torrance::ggx(cosines(n_dot_v, n_dot_l, n_dot_h, v_dot_h), alpha, fresnel)]
     ),
     kernel!(
         "cook_torrance::beckmann",
@@ -1492,7 +1503,7 @@ pub static KERNELS: &[Kernel] = &[
          alpha: ALPHA,
          fresnel: Domain::new(0.0, false, f64::INFINITY, true, "F >= 0, finite")]
             -> [f: Domain::NONNEG],
-        [cook_torrance::beckmann(cos4(n_dot_v, n_dot_l, n_dot_h, v_dot_h), alpha, fresnel)]
+        [cook_torrance::beckmann(cosines(n_dot_v, n_dot_l, n_dot_h, v_dot_h), alpha, fresnel)]
     ),
     kernel!(
         "cook_torrance::ggx_conductor_rgb",
@@ -1502,7 +1513,7 @@ pub static KERNELS: &[Kernel] = &[
          alpha: ALPHA, eta_r: ETA, eta_g: ETA, eta_b: ETA, k_r: KAPPA, k_g: KAPPA, k_b: KAPPA]
             -> [f_r: Domain::NONNEG, f_g: Domain::NONNEG, f_b: Domain::NONNEG],
         o3(cook_torrance::ggx_conductor_rgb(
-            cos4(n_dot_v, n_dot_l, n_dot_h, v_dot_h),
+            cosines(n_dot_v, n_dot_l, n_dot_h, v_dot_h),
             alpha,
             ComplexIor { eta: v3(eta_r, eta_g, eta_b), k: v3(k_r, k_g, k_b) },
         ))
@@ -1515,7 +1526,7 @@ pub static KERNELS: &[Kernel] = &[
          alpha: ALPHA, f0_r: Domain::UNIT, f0_g: Domain::UNIT, f0_b: Domain::UNIT]
             -> [f_r: Domain::NONNEG, f_g: Domain::NONNEG, f_b: Domain::NONNEG],
         o3(cook_torrance::ggx_schlick_rgb(
-            cos4(n_dot_v, n_dot_l, n_dot_h, v_dot_h), alpha, v3(f0_r, f0_g, f0_b),
+            cosines(n_dot_v, n_dot_l, n_dot_h, v_dot_h), alpha, v3(f0_r, f0_g, f0_b),
         ))
     ),
     kernel!(
@@ -1524,7 +1535,7 @@ pub static KERNELS: &[Kernel] = &[
          Born and Wolf 1.5",
         [n_dot_v: Domain::COS, n_dot_l: Domain::COS, n_dot_h: Domain::COS, v_dot_h: Domain::COS,
          alpha: ALPHA, eta: ETA] -> [f: Domain::NONNEG],
-        [cook_torrance::ggx_dielectric(cos4(n_dot_v, n_dot_l, n_dot_h, v_dot_h), alpha, eta)]
+        [cook_torrance::ggx_dielectric(cosines(n_dot_v, n_dot_l, n_dot_h, v_dot_h), alpha, eta)]
     ),
     kernel!(
         "cook_torrance::beckmann_conductor_rgb",
@@ -1534,7 +1545,7 @@ pub static KERNELS: &[Kernel] = &[
          alpha: ALPHA, eta_r: ETA, eta_g: ETA, eta_b: ETA, k_r: KAPPA, k_g: KAPPA, k_b: KAPPA]
             -> [f_r: Domain::NONNEG, f_g: Domain::NONNEG, f_b: Domain::NONNEG],
         o3(cook_torrance::beckmann_conductor_rgb(
-            cos4(n_dot_v, n_dot_l, n_dot_h, v_dot_h),
+            cosines(n_dot_v, n_dot_l, n_dot_h, v_dot_h),
             alpha,
             ComplexIor { eta: v3(eta_r, eta_g, eta_b), k: v3(k_r, k_g, k_b) },
         ))
@@ -1546,7 +1557,7 @@ pub static KERNELS: &[Kernel] = &[
          alpha: ALPHA, f0_r: Domain::UNIT, f0_g: Domain::UNIT, f0_b: Domain::UNIT]
             -> [f_r: Domain::NONNEG, f_g: Domain::NONNEG, f_b: Domain::NONNEG],
         o3(cook_torrance::beckmann_schlick_rgb(
-            cos4(n_dot_v, n_dot_l, n_dot_h, v_dot_h), alpha, v3(f0_r, f0_g, f0_b),
+            cosines(n_dot_v, n_dot_l, n_dot_h, v_dot_h), alpha, v3(f0_r, f0_g, f0_b),
         ))
     ),
     kernel!(
@@ -1555,7 +1566,7 @@ pub static KERNELS: &[Kernel] = &[
          2007",
         [n_dot_v: Domain::COS, n_dot_l: Domain::COS, n_dot_h: Domain::COS, v_dot_h: Domain::COS,
          alpha: ALPHA, eta: ETA] -> [f: Domain::NONNEG],
-        [cook_torrance::beckmann_dielectric(cos4(n_dot_v, n_dot_l, n_dot_h, v_dot_h), alpha, eta)]
+        [cook_torrance::beckmann_dielectric(cosines(n_dot_v, n_dot_l, n_dot_h, v_dot_h), alpha, eta)]
     ),
     // ---------------------------------------------------------------- sampling
     kernel!(
@@ -2240,7 +2251,7 @@ pub static KERNELS: &[Kernel] = &[
             -> [f_r: Domain::NONNEG, f_g: Domain::NONNEG, f_b: Domain::NONNEG],
         pick(coupling, 3, |k| {
             o3(material::metallic_roughness(
-                cos4(n_dot_v, n_dot_l, n_dot_h, v_dot_h),
+                cosines(n_dot_v, n_dot_l, n_dot_h, v_dot_h),
                 v3(base_color_r, base_color_g, base_color_b),
                 metallic,
                 roughness,
@@ -2258,7 +2269,7 @@ pub static KERNELS: &[Kernel] = &[
          metallic: Domain::UNIT, roughness: Domain::UNIT]
             -> [f_r: Domain::NONNEG, f_g: Domain::NONNEG, f_b: Domain::NONNEG],
         o3(material::gltf(
-            cos4(n_dot_v, n_dot_l, n_dot_h, v_dot_h),
+            cosines(n_dot_v, n_dot_l, n_dot_h, v_dot_h),
             v3(base_color_r, base_color_g, base_color_b),
             metallic,
             roughness,
@@ -2353,6 +2364,80 @@ pub static KERNELS: &[Kernel] = &[
                 [w.x, w.y, w.z, p, wt.x, wt.y, wt.z]
             },
         )
+    ),
+    // ---------------------------------------------------------------- engine
+    kernel!(
+        "engine::Convention::alpha",
+        "An engine's alpha = clamp(r, floor, 1)^2 (three.js, Filament, bevy, Karis 2013, glTF \
+         sample viewer)",
+        [convention: CONVENTION, perceptual_roughness: Domain::UNIT]
+            -> [alpha: Domain::closed(ALPHA_MIN, 1.0, "[ALPHA_MIN, 1]")],
+        pick(convention, 5, |k| [engine::ALL[k].alpha(perceptual_roughness)])
+    ),
+    kernel!(
+        "engine::Convention::f90",
+        "An engine's F90 of F0: 1, or saturate(16.5 (f0.r + f0.g + f0.b)) (Filament, bevy)",
+        [convention: CONVENTION, f0_r: Domain::UNIT, f0_g: Domain::UNIT, f0_b: Domain::UNIT]
+            -> [f90: Domain::UNIT],
+        pick(convention, 5, |k| [engine::ALL[k].f90(v3(f0_r, f0_g, f0_b))])
+    ),
+    kernel!(
+        "engine::Convention::fresnel",
+        "An engine's Schlick Fresnel F0 (1 - w) + F90 w, w = (1 - v.h)^5 or Karis 2013's exp2 fit",
+        [convention: CONVENTION, f0_r: Domain::UNIT, f0_g: Domain::UNIT, f0_b: Domain::UNIT,
+         f90: Domain::UNIT, v_dot_h: Domain::COS]
+            -> [f_r: Domain::UNIT, f_g: Domain::UNIT, f_b: Domain::UNIT],
+        pick(convention, 5, |k| o3(engine::ALL[k].fresnel(v3(f0_r, f0_g, f0_b), f90, v_dot_h)))
+    ),
+    kernel!(
+        "engine::Convention::specular",
+        "An engine's specular lobe D V F under its floors and guards, RGB, without n.l",
+        [convention: CONVENTION, n_dot_v: Domain::COS, n_dot_l: Domain::COS, n_dot_h: Domain::COS,
+         v_dot_h: Domain::COS, roughness: Domain::UNIT,
+         f0_r: Domain::UNIT, f0_g: Domain::UNIT, f0_b: Domain::UNIT, f90: Domain::UNIT]
+            -> [f_r: Domain::NONNEG, f_g: Domain::NONNEG, f_b: Domain::NONNEG],
+        pick(convention, 5, |k| {
+            o3(engine::ALL[k].specular(
+                cosines(n_dot_v, n_dot_l, n_dot_h, v_dot_h),
+                roughness,
+                v3(f0_r, f0_g, f0_b),
+                f90,
+            ))
+        })
+    ),
+    kernel!(
+        "engine::Convention::diffuse",
+        "An engine's diffuse lobe (Lambert, or bevy's Burley of alpha), RGB, without n.l",
+        [convention: CONVENTION, n_dot_v: Domain::COS, n_dot_l: Domain::COS, n_dot_h: Domain::COS,
+         v_dot_h: Domain::COS, roughness: Domain::UNIT,
+         diffuse_color_r: Domain::UNIT, diffuse_color_g: Domain::UNIT,
+         diffuse_color_b: Domain::UNIT]
+            -> [f_r: Domain::NONNEG, f_g: Domain::NONNEG, f_b: Domain::NONNEG],
+        pick(convention, 5, |k| {
+            o3(engine::ALL[k].diffuse(
+                cosines(n_dot_v, n_dot_l, n_dot_h, v_dot_h),
+                roughness,
+                v3(diffuse_color_r, diffuse_color_g, diffuse_color_b),
+            ))
+        })
+    ),
+    kernel!(
+        "engine::Convention::brdf",
+        "An engine's metallic-roughness BRDF for a punctual light, RGB, without n.l (three.js, \
+         Filament, bevy, Karis 2013, glTF sample viewer)",
+        [convention: CONVENTION, n_dot_v: Domain::COS, n_dot_l: Domain::COS, n_dot_h: Domain::COS,
+         v_dot_h: Domain::COS,
+         base_color_r: Domain::UNIT, base_color_g: Domain::UNIT, base_color_b: Domain::UNIT,
+         metallic: Domain::UNIT, roughness: Domain::UNIT]
+            -> [f_r: Domain::NONNEG, f_g: Domain::NONNEG, f_b: Domain::NONNEG],
+        pick(convention, 5, |k| {
+            o3(engine::ALL[k].brdf(
+                cosines(n_dot_v, n_dot_l, n_dot_h, v_dot_h),
+                v3(base_color_r, base_color_g, base_color_b),
+                metallic,
+                roughness,
+            ))
+        })
     ),
     // ---------------------------------------------------------------- lights
     kernel!(

@@ -4,6 +4,7 @@
 //! to another function, disagrees with it.
 
 use brdf::beckmann::{self, Beckmann};
+use brdf::engine::{self, Convention};
 use brdf::frame::{self, Frame};
 use brdf::fresnel::ComplexIor;
 use brdf::ggx::{self, Ggx};
@@ -46,6 +47,29 @@ fn idx<T: Scalar>(x: T) -> usize {
     #[allow(clippy::cast_possible_truncation, clippy::cast_sign_loss)]
     let i = x as usize;
     i
+}
+
+/// The convention of choice `k` (an index into `engine::ALL`), spelled out constant by
+/// constant so a reordered `ALL` disagrees with the table.
+fn convention<T: Scalar>(k: T) -> Convention {
+    match idx(k) {
+        0 => engine::THREE_JS,
+        1 => engine::FILAMENT,
+        2 => engine::BEVY,
+        3 => engine::UNREAL_4,
+        4 => engine::KHRONOS_SAMPLE_VIEWER,
+        c => panic!("no convention {c}"),
+    }
+}
+
+/// The cosines at `a[i..i + 4]`.
+fn cosines<T: Scalar>(a: &[T], i: usize) -> Cosines<T> {
+    Cosines {
+        n_dot_v: a[i],
+        n_dot_l: a[i + 1],
+        n_dot_h: a[i + 2],
+        v_dot_h: a[i + 3],
+    }
 }
 
 fn three<T: Scalar>(w: V3<T>) -> Vec<T> {
@@ -629,6 +653,18 @@ pub fn direct<T: Scalar>(path: &str, a: &[T]) -> Option<Vec<T>> {
         "tonemap::agx_minimal" => three(tonemap::agx_minimal(v(a, 0), &look(idx(a[3])))),
         "tonemap::agx_threejs" => three(tonemap::agx_threejs(v(a, 0))),
         "tonemap::agx_filament" => three(tonemap::agx_filament(v(a, 0), &look(idx(a[3])))),
+        "engine::Convention::alpha" => vec![convention(a[0]).alpha(a[1])],
+        "engine::Convention::f90" => vec![convention(a[0]).f90(v(a, 1))],
+        "engine::Convention::fresnel" => three(convention(a[0]).fresnel(v(a, 1), a[4], a[5])),
+        "engine::Convention::specular" => {
+            three(convention(a[0]).specular(cosines(a, 1), a[5], v(a, 6), a[9]))
+        }
+        "engine::Convention::diffuse" => {
+            three(convention(a[0]).diffuse(cosines(a, 1), a[5], v(a, 6)))
+        }
+        "engine::Convention::brdf" => {
+            three(convention(a[0]).brdf(cosines(a, 1), v(a, 5), a[8], a[9]))
+        }
         "tonemap::Operator::apply" => three(Operator::all()[idx(a[0])].apply(v(a, 1))),
         "tonemap::ev100_from_camera" => {
             vec![T::splat(tonemap::ev100_from_camera(

@@ -13,7 +13,7 @@ use syn::{FnArg, GenericParam, ImplItem, Item, Pat, Signature, TraitItem, Type};
 
 /// Types whose values are one integer argument naming a choice (an enum or a set of
 /// constants), by type name.
-const CHOICE_TYPES: &[&str] = &["AgxLook", "DiffuseCoupling", "Operator"];
+const CHOICE_TYPES: &[&str] = &["AgxLook", "Convention", "DiffuseCoupling", "Operator"];
 
 /// One parsed source file and the module path its public items have.
 struct Source {
@@ -462,6 +462,13 @@ fn param(
     Ok(match inner {
         "T" | "f64" | "f32" => vec![plain(vec![name.to_string()])],
         "V3<T>" => vec![vector(name)],
+        // The four cosines of a shading point, by field, in the crate's one order.
+        "Cosines<T>" => vec![plain(
+            ["n_dot_v", "n_dot_l", "n_dot_h", "v_dot_h"]
+                .iter()
+                .map(ToString::to_string)
+                .collect(),
+        )],
         "Mat3" => vec![plain(
             (0..3)
                 .flat_map(|i| (0..3).map(move |j| format!("{name}_{i}_{j}")))
@@ -473,12 +480,6 @@ fn param(
                 .collect(),
         )],
         "implFn(T)->T" => vec![plain(vec![name.to_string()])],
-        // A shading point's cosines, in the crate's one order.
-        "Cosines<T>" => vec![plain(
-            ["n_dot_v", "n_dot_l", "n_dot_h", "v_dot_h"]
-                .map(String::from)
-                .to_vec(),
-        )],
         // A complex IOR with named parts: its eta, then its k.
         "ComplexIor<V3<T>>" => vec![vector("eta"), vector("k")],
         // The energy terms' named wrappers: one argument each.
