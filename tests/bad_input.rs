@@ -36,7 +36,9 @@
 )]
 
 use brdf::Cosines;
+#[cfg(feature = "cook-torrance")]
 use brdf::fresnel::ComplexIor;
+#[cfg(feature = "ibl")]
 use brdf::ibl::energy::{Albedo, AverageAlbedo, Reflectance};
 use brdf::wide::{f32x8, f64x4};
 use brdf::{Real, V3};
