@@ -160,7 +160,17 @@ pub use vec3::V3;
 /// The SIMD crate whose `f32x8` and `f64x4` implement [`Real`].
 pub use wide;
 
-/// The README's usage snippet, compiled and run as a doc test.
+/// The README's snippets, compiled and run as doc tests (they use every default feature).
 #[doc = include_str!("../README.md")]
-#[cfg(all(doctest, feature = "integrate"))]
+#[cfg(all(
+    doctest,
+    feature = "integrate",
+    feature = "engine",
+    feature = "material",
+    feature = "tonemap",
+    feature = "ibl",
+    feature = "beckmann",
+    feature = "phong",
+    feature = "lights"
+))]
 pub struct ReadmeDoctests;
