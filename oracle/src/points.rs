@@ -15,7 +15,7 @@ use crate::harness::Ty;
 pub const RANDOM_POINTS: usize = 2000;
 
 /// Random points per case and type in a deep run (`BRDF_ORACLE_DEEP=1`).
-pub const DEEP_POINTS: usize = 1_000_000;
+pub const DEEP_POINTS: usize = 100_000;
 
 /// Whether this is a deep run (`BRDF_ORACLE_DEEP` set to anything but `0`): more random
 /// points, a longer hill-climb from more starting points.
