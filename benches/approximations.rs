@@ -1,8 +1,8 @@
 //! Question answered: what does each approximation save over the exact form it replaces?
 //! Each group times the exact kernel and its approximations on the same 4096 inputs, on f32
 //! and on f32x8 lanes; the ratio of their times is the speed-up, and the error each one pays
-//! for it is measured by the tests named in its doc comment (smith_approximations,
-//! fresnel_approximations). Run: `cargo bench --bench approximations`.
+//! for it is measured by the tests named in its doc comment (`cargo test --test microfacet
+//! --test fresnel approximations:: -- --nocapture`). Run: `cargo bench --bench approximations`.
 
 use brdf::wide::f32x8;
 use brdf::{beckmann, fresnel, ggx};

@@ -1,7 +1,7 @@
 //! Question answered: what does each analytic DFG fit save over reading the split-sum table?
 //! Times a bilinear lookup in a 64 x 64 table (`ibl::dfg::lookup`, f32, scalar) against each
 //! fit on the same 4096 (NoV, roughness) pairs, on f32 and on f32x8 lanes; the error each fit
-//! pays is printed by `cargo test --test ibl_dfg_approximations -- --nocapture`.
+//! pays is printed by `cargo test --test ibl dfg_approximations:: -- --nocapture`.
 //! Run: `cargo bench --bench ibl`.
 
 use brdf::ibl::dfg;

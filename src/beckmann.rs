@@ -529,7 +529,7 @@ pub fn d<T: Real>(n_dot_h: T, alpha: T) -> T {
 /// and the lane type's own exponential, as renderers evaluate it (Mitsuba 3's
 /// `MicrofacetDistribution::eval`, pbrt-v4's Beckmann `D`), arranged so that for normal inputs
 /// (and 0) no intermediate is ever a subnormal number (on x86 each costs a microcode assist of
-/// about a hundred cycles, and a Beckmann lobe's tail is full of them; `tests/lane_exp.rs`
+/// about a hundred cycles, and a Beckmann lobe's tail is full of them; `tests/lanes/exp.rs`
 /// reads the x86 flags that record one):
 ///
 /// r = 1 / (c alpha)^2, E = (1 - c^2) r, y = exp(-E / 2) r alpha / sqrt(pi), D = y^2,
@@ -556,8 +556,8 @@ pub fn d<T: Real>(n_dot_h: T, alpha: T) -> T {
 /// | f32, f32x8: ULP (relative) | 11 (7.1e-7) | 31 (2.0e-6) | 209 (1.5e-5) | D < 1e-30 |
 /// | f64, f64x4: ULP (relative) | 9 (1.3e-15) | 26 (3.4e-15) | 326 (4.1e-14) | 2507 (3.1e-13) |
 ///
-/// (`cargo test --all-features --test fast_variants -- --nocapture`, default x86-64 build;
-/// errors counted where D >= 1e-30 in f32, 1e-300 in f64; the test asserts 8 + 5 E ULP at
+/// (`cargo test --all-features --test kernels fast_variants:: -- --nocapture`, default x86-64
+/// build; errors counted where D >= 1e-30 in f32, 1e-300 in f64; the test asserts 8 + 5 E ULP at
 /// each bin's upper E, which a denser search may approach). On f64x4 the lanes equal the
 /// scalar results bit for bit; on f32x8 they differ only through the lane 2^-t, a polynomial
 /// within 2 ULP of libm's: within 6 ULP of D.
@@ -721,8 +721,8 @@ pub fn g1<T: Real>(n_dot_v: T, alpha: T) -> T {
 /// the G1 fit (3.535 a + 2.181 a^2) / (1 + 2.276 a + 2.577 a^2) written as Lambda = 1/G1 - 1):
 /// Lambda ~ (1 - 1.259 a + 0.396 a^2) / (3.535 a + 2.181 a^2) for a < 1.6, 0 beyond.
 /// Approximation: the resulting G1 is within 0.31% (relative) of the exact one for alpha and
-/// NoV in [0.01, 1] (`cargo test --test smith_approximations -- --nocapture`). Clamped at 0
-/// (the numerator crosses zero just below a = 1.6). alpha as [`d`] (the RMS slope, not
+/// NoV in [0.01, 1] (`cargo test --test microfacet smith_approximations:: -- --nocapture`). Clamped
+/// at 0 (the numerator crosses zero just below a = 1.6). alpha as [`d`] (the RMS slope, not
 /// perceptual roughness).
 #[inline]
 #[must_use]

@@ -62,8 +62,8 @@ pub fn mul<T: Real>(m: &Mat3, c: V3<T>) -> V3<T> {
 /// correctly rounded or 1 ulp off), and within 2.8 ulps in f64 and f64x4 (the MPFR oracle's
 /// deep search over 10^5 fresh points and a hill-climb: max 2.57). OETF(EOTF(x)) is within 1 ulp
 /// of x in f32 and 2 in f64 over [0, 1] outside the seam's interval (0.040449936, 0.04045],
-/// and every 8- and 16-bit code round-trips exactly (`cargo test --test color_transfer -- --nocapture`).
-/// [`srgb_oetf_fast`] is the plain single-`pow` form in the input's own precision.
+/// and every 8- and 16-bit code round-trips exactly (`cargo test --test tonemap color_transfer:: --
+/// --nocapture`). [`srgb_oetf_fast`] is the plain single-`pow` form in the input's own precision.
 ///
 /// Domain: every value. Negative input (and -inf) is clamped to 0 (a documented input clamp:
 /// so one slightly negative pixel from a filter encodes as black); NaN gives NaN. Above 1 the

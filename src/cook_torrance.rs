@@ -10,7 +10,7 @@
 //! Directions are local-frame unit vectors pointing away from the surface. The BRDF is 0 when
 //! either direction is at or below the horizon (reflection only). Energy: with F = 1 the
 //! directional albedo is below 1 and falls with roughness, since single scattering drops the
-//! light that bounces more than once between microfacets (`tests/cook_torrance_energy.rs`
+//! light that bounces more than once between microfacets (`tests/cook_torrance/energy.rs`
 //! prints the loss).
 //!
 //! Entry points: [`eval`] and [`eval_rgb`] on directions with any Fresnel closure; the
@@ -54,7 +54,7 @@ pub fn half_vector<T: Real>(wo: V3<T>, wi: V3<T>) -> (V3<T>, T) {
 /// NaN in any component gives NaN in both. Within 3 ULP of the same formulas evaluated in
 /// f64 from the same f32 directions; within 8 ULP of [`half_vector`]'s cosines where
 /// 1 + wo.wi > 0.3, while closer to opposite directions [`half_vector`]'s own error takes
-/// over (`cargo test --test cook_torrance_rgb half_cosines -- --nocapture`).
+/// over (`cargo test --test cook_torrance rgb::half_cosines -- --nocapture`).
 #[inline]
 #[must_use]
 pub fn half_cosines<T: Real>(wo: V3<T>, wi: V3<T>) -> (T, T) {

@@ -647,7 +647,7 @@ impl Convention {
     /// input. In `f32` within 12 ULP of the `f64` evaluation on the test grid (cosines down to
     /// 1e-5, n.h up to 1, every roughness; measured 5.1 for three.js to 9.96 for Unreal
     /// Engine 4), and within 9 to 12 ULP of each engine's own `f32` shader code wherever that
-    /// code is accurate (`cargo test --test engine_conventions -- --nocapture` prints both,
+    /// code is accurate (`cargo test --test material engine_conventions:: -- --nocapture` prints both,
     /// and where the engines' forms lose digits).
     ///
     /// Sources: three.js `RE_Direct_Physical`, Filament `surfaceShading`, bevy `point_light`,

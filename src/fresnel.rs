@@ -108,7 +108,7 @@ pub fn ior_from_f0<T: Real>(f0: T) -> T {
 /// Model for Physically-based Rendering", eq. 15). Exact at c = 1 (F0) and c = 0 (1). The
 /// factor is (1 - c)^5, not the (1 - c^5) some course notes print. Approximation: max abs error
 /// against [`dielectric`] 0.060 for eta = 1.33, 0.036 for 1.5, 0.074 for 2.4, 0.125 for 3, all
-/// near c = 0.1 (`cargo test --test fresnel_approximations -- --nocapture`).
+/// near c = 0.1 (`cargo test --test fresnel approximations:: -- --nocapture`).
 ///
 /// Domain: F0 in [0, 1] (outside, and NaN, give NaN); the cosine is clamped to [0, 1] (a
 /// negative one counts as grazing: 1), NaN gives NaN. Within 3.2 ulps (f32) / 3.5 ulps (f64)
@@ -569,7 +569,7 @@ pub fn conductor<T: Real>(cos_theta_i: T, eta: T, k: T) -> T {
 /// 10 ULP, relative 6.0e-7 (f32); 12 ULP, relative 1.3e-15 (f64), where a 1-ULP change of the
 /// cosine moves F by at most 8 ULP; elsewhere (k = 0 near the critical angle) within 0.67
 /// (f32) / 1.0 (f64) of that change. The same on f32x8 and f64x4, whose lanes equal the
-/// scalar results bit for bit (`cargo test --all-features --test fast_variants --
+/// scalar results bit for bit (`cargo test --all-features --test kernels fast_variants:: --
 /// --nocapture`, default x86-64 build). Not accurate (but finite, in [0, 1]) for eta = 1
 /// exactly with 0 < k < 2^-124 (f32) / 2^-1017 (f64) at cosines up to about a hundred times
 /// sqrt(k), where |Im(N^2 - s2)| = 2 k is raised to 2^-123 / 2^-1016: there F = k^2 / (4 c^4)
@@ -843,7 +843,7 @@ pub fn average_dielectric(eta: f64) -> f64 {
 /// (eta - 1) / (4.08567 + 1.00071 eta) for eta >= 1, and
 /// 0.997118 + 0.1014 eta - 0.965241 eta^2 - 0.130607 eta^3 for eta < 1. Approximation: max
 /// abs error 0.0065 against the quadrature over eta in [0.5, 3], at eta = 1.17
-/// (`cargo test --test fresnel_approximations -- --nocapture`). Domain eta in (0, MAX]
+/// (`cargo test --test fresnel approximations:: -- --nocapture`). Domain eta in (0, MAX]
 /// (eta <= 0, +inf and NaN give NaN); beyond 3 the fit tends to 1 / 1.00071, below 0.5 to
 /// 0.997.
 #[inline]

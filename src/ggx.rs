@@ -384,7 +384,7 @@ pub fn d<T: Real>(n_dot_h: T, alpha: T) -> T {
 /// flops for [`d`]'s single rounding. Max error against [`d`] over cosines from 0 through 1e-7
 /// to 1 and alpha over [ALPHA_MIN, ALPHA_MAX] (65 000 points per type): 7 ULP, relative
 /// 5.3e-7 (f32); 8 ULP, relative 9.1e-16 (f64); the same on f32x8 and f64x4, whose lanes equal
-/// the scalar results bit for bit (`cargo test --all-features --test fast_variants --
+/// the scalar results bit for bit (`cargo test --all-features --test kernels fast_variants:: --
 /// --nocapture`, default x86-64 build).
 #[inline]
 #[must_use]
@@ -486,9 +486,9 @@ fn guarded_half_over<T: Real>(den: T, n_dot_v: T, n_dot_l: T, param: T) -> T {
 /// V = 0.5 / lerp(2 NoL NoV, NoL + NoV, alpha) (Hammon 2017, "PBR Diffuse Lighting for
 /// GGX+Smith Microsurfaces", GDC). Approximation: max relative error 0.29 against
 /// [`v_correlated`] for alpha and cosines in [0.01, 1], worst at alpha = 0.01 with both
-/// cosines 0.01 (`cargo test --test smith_approximations -- --nocapture`). Cosines clamped to
-/// [0, 1]; 0 when both are 0; alpha as [`d`] (the width r^2, not perceptual roughness); NaN
-/// for NaN input.
+/// cosines 0.01 (`cargo test --test microfacet smith_approximations:: -- --nocapture`). Cosines
+/// clamped to [0, 1]; 0 when both are 0; alpha as [`d`] (the width r^2, not perceptual roughness);
+/// NaN for NaN input.
 #[inline]
 #[must_use]
 pub fn v_correlated_hammon<T: Real>(n_dot_v: T, n_dot_l: T, alpha: T) -> T {

@@ -19,7 +19,7 @@
 //! The `_f32` form hands the kernel each direction rounded to `f32` and widens its result
 //! to `f64`; the integration itself (abscissae, weights, sums, error estimate) is the `f64`
 //! one, so an `f32` kernel's estimate differs from its `f64` twin's by the kernel's own
-//! rounding only (`tests/integrate_generic.rs`). A kernel written on [`V3`](crate::V3)
+//! rounding only (`tests/integrate/generic.rs`). A kernel written on [`V3`](crate::V3)
 //! converts each direction with `into()`:
 //!
 //! ```
@@ -55,9 +55,9 @@
 //! of a rectangle edge, and adaptivity does the rest.
 //!
 //! The error estimate |I7 - I5| is that of the degree-5 rule, so it is pessimistic for the
-//! degree-7 value returned: the tests in `tests/integrate_accuracy.rs` show actual errors
+//! degree-7 value returned: the tests in `tests/integrate/accuracy.rs` show actual errors
 //! below the reported ones on every known integral, and those in
-//! `tests/integrate_error_estimates.rs` on anisotropic GGX and Beckmann lobes down to
+//! `tests/integrate/error_estimates.rs` on anisotropic GGX and Beckmann lobes down to
 //! alpha_x / alpha_y = 1/100 (normalization and signed projected area: estimate at least 10
 //! times the actual error).
 //!
@@ -68,7 +68,7 @@
 //! edge, the sliver between the edge and the kink can hold none of the rectangle's 17 sample
 //! points and is missed outright: the integral of max(0, cos(theta + 1.3)), whose kink is the
 //! ring theta = 0.271 rad (edge at 0.256), comes out 1.8e-4 (0.9%) too low with an estimate
-//! of 1.0e-9 (`tests/integrate_error_estimates.rs`).
+//! of 1.0e-9 (`tests/integrate/error_estimates.rs`).
 //! [`smith_weak_furnace`], whose kink is known, scales its estimate by [`KINK_SAFETY`], which
 //! the crate's tests show to be a bound on every closed form they try; for others, put a
 //! `peaks` direction on the kink (on a ring this makes the estimate a bound again, in the same
@@ -302,7 +302,7 @@ impl Breaks {
 /// [`MAX_PEAKS`] shape the initial partition, the normal always does. `f` is called only with
 /// unit vectors with z >= 0 (z = 0 never occurs: the rule's points are interior).
 ///
-/// Accuracy (tests/integrate_accuracy.rs): 1e-5 absolute or better on smooth integrands and
+/// Accuracy (tests/integrate/accuracy.rs): 1e-5 absolute or better on smooth integrands and
 /// 1e-3 relative on lobes as narrow as alpha = 0.01 or cos^10000, with [`Config::default`].
 #[must_use]
 pub fn hemisphere(mut f: impl FnMut(DVec3) -> f64, peaks: &[DVec3], cfg: &Config) -> Estimate {
@@ -498,7 +498,7 @@ pub fn ndf_projected_area_f32(mut d: impl FnMut(Vec3) -> f32) -> Estimate {
 /// concentrate towards it).
 ///
 /// The integrand has a kink along the great circle wo.m = 0, where the embedded-rule estimate
-/// |I7 - I5| can under-report: by 44x on the GGX cases of `tests/integrate_accuracy.rs`
+/// |I7 - I5| can under-report: by 44x on the GGX cases of `tests/integrate/accuracy.rs`
 /// (alpha 0.2, theta_o = 80 degrees: actual 4.4e-6, raw estimate 1.0e-7) and by up to 1.1e3x
 /// on Beckmann (alpha 1, theta_o = 89.8 degrees: actual 1.1e-4, raw estimate 1.0e-7). The
 /// returned error is therefore [`KINK_SAFETY`] times the raw estimate: about 1e-3 of the
@@ -572,7 +572,7 @@ pub fn smith_weak_furnace_f32(
 /// alpha 0.15 to 1), whose worst raw under-reports are 1.1e3x (Beckmann alpha 1 at 89.8
 /// degrees) and 990x (alpha 0.25 at 74.66 degrees, the kink's top 0.012 rad past an edge).
 ///
-/// Evidence, from the crate's tests (`tests/integrate_error_estimates.rs`, which also hold
+/// Evidence, from the crate's tests (`tests/integrate/error_estimates.rs`, which also hold
 /// the sweep as an ignored test): on closed forms not used to choose it (the Beckmann weak
 /// furnace for alpha from ALPHA_MIN = 1e-4 to 1 and theta_o up to 89 degrees, the clamped
 /// cosine max(0, wo.m) as a furnace with D = 1 / pi and G1 = 1 up to 89.8 degrees, and

@@ -75,7 +75,7 @@
 //!
 //! ## Bad input: one rule for every function
 //! Every public kernel keeps the same rule, on `f32`, `f64`, `f32x8` and `f64x4` alike
-//! (`tests/bad_input.rs` lists every kernel and checks each clause on every lane type):
+//! (`tests/kernels/bad_input.rs` lists every kernel and checks each clause on every lane type):
 //!
 //! 1. **NaN in, NaN out.** A NaN in any input (a cosine, a direction component, a parameter,
 //!    a uniform sample) gives NaN, never a plausible finite value: a CPU reference must surface

@@ -33,7 +33,7 @@
 //! kd = (1 - F)(1 - metallic) ([`OneMinusF`](DiffuseCoupling::OneMinusF)) agrees with it at
 //! metallic 0 and 1 only: in between its diffuse term is lower by
 //! metallic (1 - metallic) (base - 0.04)(1 - w) base / pi, up to 0.076 at base = 1,
-//! metallic = 0.5, v.h = 1 (`cargo test --test material_gltf_composition -- --nocapture`
+//! metallic = 0.5, v.h = 1 (`cargo test --test material gltf_composition:: -- --nocapture`
 //! checks both statements to 4e-15 of D V + base / pi). The specification's own combined
 //! listing mixed the two Fresnel terms this way until its 2024 revision, which replaced it
 //! with the composition above.
@@ -49,12 +49,12 @@
 //! metallic 0): <= 1 up to 30 degrees, above 1 from about 60 degrees, up to 1.85 at 89 degrees
 //! on a smooth surface; a glTF dielectric conserves energy at every angle only for base colours
 //! up to 0.087. [`Additive`](DiffuseCoupling::Additive): exactly 1 + the specular albedo, 1.04
-//! at normal view and up to 1.92 at 89 degrees (`cargo test --test material_energy --
+//! at normal view and up to 1.92 at 89 degrees (`cargo test --test material energy:: --
 //! --nocapture` prints the tables). The glTF specification says as much ("breaks ... energy
 //! conservation") and points to Kulla and Conty 2017 for a coupling that conserves it.
 //!
 //! Every coupling here is reciprocal: v.h = l.h, so kd and F are symmetric in the two
-//! directions (`cargo test --test material_reciprocity`).
+//! directions (`cargo test --test material reciprocity::`).
 //!
 //! ## Parameters
 //! `roughness` is the perceptual roughness r in [0, 1]: glTF's `roughnessFactor` (times the
@@ -159,7 +159,7 @@ fn in_unit_rgb<T: Real>(c: V3<T>) -> T::Mask {
 /// with s = 1 - c, for c = v.h clamped to [0, 1]. The complement is a sum of positive terms:
 /// 1 - (1 - c)^5 evaluated as written loses every digit as c -> 0 (1 - w = 5c + ...), and
 /// with it the diffuse weight kd = 1 - F at grazing half vectors (the f32 form stays within
-/// the material's 12-ulp bound against f64: `cargo test --test material_stability --
+/// the material's 12-ulp bound against f64: `cargo test --test material stability:: --
 /// --nocapture`).
 #[inline]
 fn schlick_weights<T: Real>(c: T) -> (T, T) {
@@ -282,11 +282,11 @@ fn any_nan<T: Real>(a: V3<T>, b: V3<T>) -> T::Mask {
 /// to [0, 1] (n.h <= 0 gives D = 0). Roughness 0 is the floored alpha
 /// [`ALPHA_MIN`](crate::microfacet::ALPHA_MIN), finite everywhere: where both cosines are
 /// near 0 (subnormal in f32) D V and f are capped at the largest finite value, never inf
-/// (`cargo test --test material_stability -- --nocapture` sweeps the parameter extremes).
+/// (`cargo test --test material stability:: -- --nocapture` sweeps the parameter extremes).
 ///
 /// Accuracy: f32 within 12 ulps (relative) of f64 on the same inputs, 5.6 measured over
 /// cosines down to 1e-4; 1 - F is formed from complements, so grazing half vectors and F0
-/// near 1 lose nothing to cancellation (`cargo test --test material_stability -- --nocapture`).
+/// near 1 lose nothing to cancellation (`cargo test --test material stability:: -- --nocapture`).
 ///
 /// Sources: glTF 2.0 Appendix B; Karis 2013, "Real Shading in Unreal Engine 4"; Guy and
 /// Agopian, "Physically Based Rendering in Filament", section 4.6 (`BRDF` listing).
@@ -615,7 +615,7 @@ impl<T: Real> MetallicRoughness<T> {
     /// wi below the horizon: p_diff = 0 but p_spec is the density of the reflected visible
     /// normals there, so pdf integrates to 1 over the whole sphere and to
     /// 1 - P x (the fraction of specular samples reflected below the horizon) over the upper
-    /// hemisphere (`cargo test --test material_sampling -- --nocapture` prints both).
+    /// hemisphere (`cargo test --test material sampling:: -- --nocapture` prints both).
     #[inline]
     #[must_use]
     pub fn pdf(&self, wo: V3<T>, wi: V3<T>) -> T {

@@ -39,7 +39,7 @@
 //! lobe max(0, c)^n is a normal f32; where it underflows into subnormals the error is absolute,
 //! at most 2^-149 (f / c^n + 1).
 //!
-//! Albedo at a glance (ks = 1, `tests/phong_energy.rs`): normalized Phong gives 1 at normal
+//! Albedo at a glance (ks = 1, `tests/phong/energy.rs`): normalized Phong gives 1 at normal
 //! incidence and about cos(theta_o) for tight lobes (0.087 at 85 degrees, n >= 1000); exact
 //! Blinn-Phong gives 1 at normal incidence and about cos^2(theta_o) for tight lobes; classic
 //! Phong gives 2 pi at n = 0, still 1.07 at n = 2 and 89 degrees.
@@ -59,9 +59,9 @@
 //! assert!((phong::normalized(0.8, 0.8, 1.0, 0.8, 50.0) / peak - 1.0).abs() < 1e-6);
 //! ```
 //!
-//! Figures quoted here and on each item come from `cargo test --no-default-features --features phong,integrate
-//! --test phong_energy --test phong_reciprocity --test phong_normalization --test
-//! phong_stability -- --nocapture`.
+//! Figures quoted here and on each item come from `cargo test --no-default-features --features
+//! phong,integrate --test phong -- --nocapture` (its modules `energy`, `reciprocity`,
+//! `normalization` and `stability`).
 
 use crate::domain::{above_horizon, in_unit, nan_unless};
 use crate::dw::Dw;
@@ -116,7 +116,7 @@ pub fn phong_normalization<T: Real>(exponent: T) -> T {
 /// Derivation: at v = normal, n.h = cos(theta_l / 2); with x = cos(theta_l / 2) the albedo
 /// integral 2 pi c int_0^(pi/2) cos^n(theta/2) cos(theta) sin(theta) d theta becomes
 /// 8 pi c int_(1/sqrt 2)^1 (2 x^(n+3) - x^(n+1)) dx = 8 pi c (n + 2^(-n/2)) / ((n + 2)(n + 4)).
-/// Checked by numerical integration for n from 0 to 10^4 (`tests/phong_energy.rs`). Same
+/// Checked by numerical integration for n from 0 to 10^4 (`tests/phong/energy.rs`). Same
 /// result as Giesen 2009, "Derivation of the normalization factor for Blinn-Phong".
 ///
 /// Domain: n finite and >= 0 (NaN otherwise). c(0) = 1 / pi (a Lambertian lobe: (n.h)^0 = 1);
@@ -168,7 +168,7 @@ fn normalization_exact_dw<T: Real>(n: T) -> (Dw<T>, T) {
 /// (Akenine-Moller, Haines, Hoffman 2008, "Real-Time Rendering", 3rd ed.; it integrates the
 /// albedo with the n.l factor approximated, and is exact at n = 0).
 ///
-/// Error against the exact factor, measured over n in [0, 10^4] (`tests/phong_normalization.rs`):
+/// Error against the exact factor, measured over n in [0, 10^4] (`tests/phong/normalization.rs`):
 /// it is never below the exact one, by at most 7.52% (relative), at n = 8.76; the excess is
 /// 2 / (n + 6) for large n (0.02% at n = 10^4). Since the exact factor gives albedo 1 at normal
 /// incidence, the approximation gives up to 1.075 there.
@@ -241,7 +241,7 @@ pub fn modified<T: Real>(n_dot_v: T, n_dot_l: T, r_dot_l: T, ks: T, exponent: T)
 ///
 /// Its directional albedo is exactly ks at normal incidence (the lobe then lies whole in the
 /// hemisphere) and less elsewhere, where the horizon clips the lobe: energy conserving for
-/// ks <= 1 (measured over n in [0, 10^4] in `tests/phong_energy.rs`). A wide lobe is dimmer
+/// ks <= 1 (measured over n in [0, 10^4] in `tests/phong/energy.rs`). A wide lobe is dimmer
 /// and a tight one brighter than [`classic`] at its peak: the factor (n + 2) / (2 pi) is below
 /// 1 for n < 2 pi - 2 = 4.28.
 ///
@@ -330,7 +330,7 @@ pub fn blinn_phong<T: Real>(n_dot_v: T, n_dot_l: T, n_dot_h: T, ks: T, exponent:
 ///
 /// Away from normal incidence the albedo falls (about cos^2(theta_o) for a tight lobe, as the
 /// half-vector lobe maps to a wider, horizon-clipped lobe of l); it never exceeds ks over
-/// n in [0, 10^4] (`tests/phong_energy.rs`). n = 0 is Lambert: ks / pi.
+/// n in [0, 10^4] (`tests/phong/energy.rs`). n = 0 is Lambert: ks / pi.
 ///
 /// Domain: ks in [0, 1], exponent finite and >= 0 (NaN otherwise, also below the horizon);
 /// 0 where `n_dot_v <= 0` or `n_dot_l <= 0`. Peak ks c(n), finite up to n = `T::MAX`.

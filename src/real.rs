@@ -63,13 +63,13 @@
 //! paths use `wide`'s polynomials where they are accurate and fall back to `libm` per lane
 //! where they are not. The bound of each lane function against the scalar one, over its whole
 //! domain including 0, subnormals, huge values and infinities, is listed on the method and
-//! enforced by `tests/lanes_vs_scalar.rs`:
+//! enforced by `tests/lanes/vs_scalar.rs`:
 //!
 //! | function | f32x8 vs f32 | f64x4 vs f64 | lane implementation |
 //! |---|---|---|---|
 //! | `sqrt`, `recip`, `abs`, `floor`, `min`, `max`, `copysign`, `mul_add` | 0 ULP | 0 ULP | IEEE instructions |
 //! | `exp` | 1 ULP | 2 ULP | `wide` polynomial (f32: the same operations, bit-identical, without its data-dependent branches) |
-//! | `exp_ftz` | 1 ULP | 2 ULP | `exp` with results below `MIN_POSITIVE` flushed to 0 (f32: no subnormal intermediate for normal inputs; `tests/lane_exp.rs` checks the definition bit for bit and reads the x86 flags) |
+//! | `exp_ftz` | 1 ULP | 2 ULP | `exp` with results below `MIN_POSITIVE` flushed to 0 (f32: no subnormal intermediate for normal inputs; `tests/lanes/exp.rs` checks the definition bit for bit and reads the x86 flags) |
 //! | `exp2` | 1 ULP | 0 ULP | `wide` polynomial (f32), `libm` per lane (f64: `wide` is 1901 ULP off) |
 //! | `ln` | 1 ULP | 1 ULP | `wide` polynomial, subnormals rescaled, negatives give NaN |
 //! | `sin`, `cos` | 1 ULP | 1 ULP | `wide` polynomial for \|x\| <= 1e3, `libm` per lane beyond |
@@ -81,7 +81,7 @@
 //!
 //! Measured over about 2.2 million inputs per type (every 4099th f32 bit pattern, every
 //! (2^43 + 1)th f64 one, the specials and a dense sweep of [-10, 10]):
-//! `cargo test --test lanes_vs_scalar -- --nocapture`.
+//! `cargo test --test lanes vs_scalar:: -- --nocapture`.
 //!
 //! `pow` maps to `libm` per lane because an `exp(y ln x)` polynomial loses `|y ln x|` ULP,
 //! which is thousands of ULP for the Phong exponents (10^4) this crate feeds it.
@@ -275,7 +275,7 @@ pub trait Real:
     /// For kernels whose arguments run far into the tail (a Beckmann lobe at grazing angles):
     /// on f32x8, for normal inputs and 0, no lane ever meets a subnormal number, which on x86
     /// costs a microcode assist of about a hundred cycles per instruction
-    /// (`tests/lane_exp.rs` reads the x86 flags that record one). Inputs: any; NaN gives NaN,
+    /// (`tests/lanes/exp.rs` reads the x86 flags that record one). Inputs: any; NaN gives NaN,
     /// +inf gives +inf, -inf gives 0. Error of the flush: results in (0, MIN_POSITIVE) become
     /// 0, an absolute error below 1.2e-38 (f32) / 2.3e-308 (f64).
     fn exp_ftz(self) -> Self;
@@ -339,7 +339,7 @@ pub trait Real:
 // instructions in safe, always-inlined functions, and LLVM narrows a splat, one lane
 // operation and the extraction of lane 0 to the scalar instruction (`vfmadd213ss`, `sqrtss`).
 // Without FMA the multiply-add is `a * b + c`, two roundings, exactly as before and as the
-// lanes do on such targets (`tests/lanes_vs_scalar.rs`); `tests/scalar_instructions.rs`
+// lanes do on such targets (`tests/lanes/vs_scalar.rs`); `tests/lanes/scalar_instructions.rs`
 // checks both against their definitions.
 
 /// a b + c, fused where the target has FMA (x86 with `fma`, aarch64 with NEON).
@@ -859,7 +859,7 @@ macro_rules! impl_real_lanes {
 }
 
 // `wide`'s f32x8 exp2 is within 1 ULP of libm; its f64x4 exp2 is 1901 ULP off near 0.5
-// (measured by tests/lanes_vs_scalar.rs), so f64 lanes call libm per lane.
+// (measured by tests/lanes/vs_scalar.rs), so f64 lanes call libm per lane.
 #[inline]
 fn exp2_lanes<V: Exp2Lanes>(v: V) -> V {
     v.exp2_lanes()
@@ -1026,7 +1026,7 @@ pub(crate) mod sealed {
         /// number for every such t; NaN gives NaN; outside that range unspecified. Scalars and f64 lanes:
         /// `libm::exp2f` / `libm::exp2`; f32 lanes: within 2 ULP of `libm::exp2f` (1 ULP where
         /// multiply-adds are fused), no branch, no subnormal intermediate (the unit test below,
-        /// `tests/lane_exp.rs`). For kernels whose exponent is known to be small and
+        /// `tests/lanes/exp.rs`). For kernels whose exponent is known to be small and
         /// non-positive (the `_fast` Beckmann D).
         fn exp2_neg(self, token: Token) -> Self;
     }

@@ -17,19 +17,19 @@
 //! `cosine_hemisphere`'s direction and the disk angle of `ggx_vndf`, the angle of the D cos
 //! samplers' slope (their normal's azimuth is 2 pi u2 + pi), u1 the cap azimuth of
 //! `ggx_vndf_spherical_cap`, and `beckmann_vndf` has no angle (u1 and u2 are its two slopes).
-//! Each sampler's doc gives its mapping; `tests/sampling_windows.rs` checks them at normal
+//! Each sampler's doc gives its mapping; `tests/sampling/windows.rs` checks them at normal
 //! incidence.
 //!
 //! Each sampler draws its pdf for every wo, with no approximate special case (for example at
 //! normal incidence), and for fixed u its sample is continuous in wo above the horizon,
 //! except at wo = +z for the samplers that build a frame around wo's azimuth (`ggx_vndf`,
 //! `beckmann_vndf` and `beckmann_reflection`), where that azimuth is undefined
-//! (`tests/sampling_windows.rs` checks both, on both sides of every internal switch).
+//! (`tests/sampling/windows.rs` checks both, on both sides of every internal switch).
 //!
 //! Bad input: a NaN in `u1`, `u2` or any component of `wo` gives a NaN direction (all three
 //! components) and a NaN pdf, never a plausible normal. alpha is clamped to [ALPHA_MIN,
 //! ALPHA_MAX] (`crate::microfacet`), so every finite alpha the constructors accept samples
-//! unit normals with finite pdfs (`tests/microfacet_domains.rs`).
+//! unit normals with finite pdfs (`tests/microfacet/domains.rs`).
 //!
 //! The pdf of the reflected direction wi = reflect(wo, m) is pdf_m / (4 |wo.m|) ([`reflect_pdf`];
 //! Walter et al. 2007, eq. 14).
@@ -251,7 +251,7 @@ const FRAC_1_SQRT_PI: f64 = 0.564_189_583_547_756_3;
 /// 1 - |y| within 0.52 (1 + 2 x^2) eps (the rounding of x) for 1 - |y| down to 2^-30 in f64
 /// and over all of f32; below 2^-30 the polynomial (fit for f32's range) starts too far off
 /// for two steps, and erfc(x) / (1 - |y|) - 1 reaches 1.9e-3 at 2^-53
-/// (`tests/sampling_beckmann_inversion.rs`). +-inf at +-1; NaN outside [-1, 1].
+/// (`tests/sampling/beckmann_inversion.rs`). +-inf at +-1; NaN outside [-1, 1].
 #[cfg(feature = "beckmann")]
 #[inline]
 #[must_use]
@@ -323,7 +323,7 @@ pub fn erf_inv<T: Real>(y: T) -> T {
 /// step (Jakob's 8 plain steps were just enough in f64, 7 left 20 times the bound below).
 /// With it 6 steps meet the bound (5 leave 8 times it); 7 keep one step of margin.
 ///
-/// Accuracy (`tests/sampling_beckmann_inversion.rs` recovers x from the returned normal and
+/// Accuracy (`tests/sampling/beckmann_inversion.rs` recovers x from the returned normal and
 /// evaluates the CDF in f64 without cancellation, over theta_o from 0 to 89.99 degrees,
 /// alpha from ALPHA_MIN to ALPHA_MAX, isotropic and anisotropic, u1 up to the largest float
 /// below 1, and random views, alphas and u1 on f32, f64, f32x8 and f64x4): |CDF(x) - u1| is

@@ -5,7 +5,7 @@
 //!
 //! Neither lobe conserves energy exactly. Directional albedo with rho = 1, by adaptive
 //! cubature, and the grazing limit theta_o -> 90 deg in closed form (`cargo test
-//! --no-default-features --features diffuse,integrate --test diffuse_burley_energy --
+//! --no-default-features --features diffuse,integrate --test diffuse burley_energy:: --
 //! --nocapture`):
 //!
 //! | form | r | 0 deg | 60 deg | 80 deg | 89.99 deg | limit at 90 deg |
@@ -130,7 +130,7 @@ fn burley_core<T: Real>(n_dot_v: T, n_dot_l: T, cos2_d: Dw<T>, rho: T, roughness
 /// rounded once: within 0.7 ULP of the correctly rounded value on f32, f64, f32x8 and f64x4
 /// (MPFR oracle, `cargo test -p brdf-oracle --release --test lobes -- --nocapture`; max 0.50
 /// found by its deep search), and lanes bit-identical to scalars
-/// (`--test diffuse_burley_stability`).
+/// (`--test diffuse burley_stability::`).
 ///
 /// Not energy conserving: its directional albedo exceeds rho for r > 0.4, by up to 56% (1.5575
 /// rho for r = 1 at grazing; see the module docs). Reciprocal: l.h = v.h.

@@ -21,9 +21,9 @@
 //! The weights take Fresnel values as plain numbers so that any Fresnel (Schlick, exact
 //! dielectric, conductor) and any cosine convention can be used; the Schlick forms are
 //! conveniences. Measured figures: `cargo test --no-default-features --features
-//! diffuse,integrate --test diffuse_coupling_energy --test diffuse_coupling_reciprocity --
-//! --nocapture`. Precision: f32 within 2.4e-7 of f64 for every function here (absolute, on
-//! unit-scale inputs), lanes bit-identical to scalars (`--test diffuse_coupling_stability`).
+//! diffuse,integrate --test diffuse -- --nocapture coupling_energy:: coupling_reciprocity::`.
+//! Precision: f32 within 2.4e-7 of f64 for every function here (absolute, on unit-scale inputs),
+//! lanes bit-identical to scalars (`--test diffuse coupling_stability::`).
 
 use crate::domain::{above_horizon, checked_unit, in_unit, nan_unless};
 use crate::error::{ParamError, require};
@@ -47,9 +47,9 @@ fn unit_pair<T: Real>(a: T, b: T) -> T::Mask {
 ///
 /// Not reciprocal: it depends on wi alone, so lambert x w gives f(wo, wi) != f(wi, wo)
 /// wherever F(wi) != F(wo); with Schlick at n.l the relative asymmetry reaches 0.99995 (cosines
-/// 1 and 1e-5; `--test diffuse_coupling_reciprocity`). Nor does it bound energy: it ignores
+/// 1 and 1e-5; `--test diffuse coupling_reciprocity::`). Nor does it bound energy: it ignores
 /// the light the specular lobe takes at wo, so with a Fresnel mirror on top the albedo reaches
-/// 20/21 + F(n.v), 1.948 at 89.9 deg (`--test diffuse_coupling_energy`).
+/// 20/21 + F(n.v), 1.948 at 89.9 deg (`--test diffuse coupling_energy::`).
 ///
 /// Domain: `fresnel_l` in [0, 1], `f0` in [0, 1) (NaN outside; a metal, F0 = 1, has no
 /// diffuse lobe to weight). Output in [0, 1 / (1 - F0)].

@@ -215,7 +215,7 @@ fn eon_with<T: Real>(
 /// The EON BRDF f = f_FON + f_ms with the exact FON albedo (formulas in the docs of
 /// [`brdf::diffuse`](crate::diffuse) under EON); the reference form, energy-preserving to rounding: at rho = 1 its directional
 /// albedo is 1 for every sigma and view angle (within 5.1e-10 by numerical integration, up to
-/// theta_o = 89 degrees: `cargo test --test diffuse_eon_energy -- --nocapture`).
+/// theta_o = 89 degrees: `cargo test --test diffuse eon_energy:: -- --nocapture`).
 ///
 /// Arguments: the cosines n.v, n.l and v.l of unit vectors, the single-scattering albedo rho
 /// and the roughness sigma (OpenPBR's `diffuse_roughness`).
@@ -250,7 +250,7 @@ pub fn eon<T: Real>(n_dot_v: T, n_dot_l: T, v_dot_l: T, rho: T, sigma: T) -> T {
 /// [`eon`] with the FON albedo E(mu) from the paper's quartic fit ([`eon_fon_albedo_approx`])
 /// instead of the exact form: no `acos`, as in shader code. Its white-furnace albedo at rho = 1
 /// deviates from 1 by at most 5.3e-4 over sigma in [0, 1] and theta_o up to 89 degrees
-/// (`cargo test --test diffuse_eon_energy -- --nocapture`).
+/// (`cargo test --test diffuse eon_energy:: -- --nocapture`).
 ///
 /// Domain and edges as [`eon`]. Source: Portsmouth, Kutz, Hill 2025, the `f_EON` listing
 /// with `exact = false`.
@@ -281,7 +281,7 @@ pub fn eon_fon_albedo<T: Real>(n_dot_v: T, sigma: T) -> T {
 /// grazing, where the exact value is 1).
 ///
 /// Accuracy against [`eon_fon_albedo`]: max |error| 4.7e-4 (at sigma = 1, mu = 0.95), measured
-/// by `cargo test --test diffuse_eon_albedo -- --nocapture`.
+/// by `cargo test --test diffuse eon_albedo:: -- --nocapture`.
 ///
 /// Domain and edges as [`eon_fon_albedo`]. Source: Portsmouth, Kutz, Hill 2025, the `E_FON_approx`
 /// listing.
@@ -336,7 +336,7 @@ pub fn eon_multiscatter_albedo<T: Real>(rho: T, sigma: T) -> T {
 ///
 /// Accuracy against numerical integration of [`eon`]: max |difference| 5.5e-10 (the
 /// integrator's accuracy) over rho and sigma in [0, 1], theta_o up to 89 degrees
-/// (`cargo test --test diffuse_eon_albedo -- --nocapture`).
+/// (`cargo test --test diffuse eon_albedo:: -- --nocapture`).
 ///
 /// Domain: rho and sigma in [0, 1] (NaN outside). Edges: rho at sigma = 0 (Lambert); 0 for
 /// mu <= 0.
@@ -353,7 +353,7 @@ pub fn eon_albedo<T: Real>(n_dot_v: T, rho: T, sigma: T) -> T {
 ///
 /// Accuracy against numerical integration of [`eon_approx`]: max |difference| 2.2e-4 over rho
 /// and sigma in [0, 1], theta_o up to 89 degrees (the fit's error enters both the
-/// formula and the lobe; `cargo test --test diffuse_eon_albedo -- --nocapture`).
+/// formula and the lobe; `cargo test --test diffuse eon_albedo:: -- --nocapture`).
 ///
 /// Domain and edges as [`eon_albedo`]. Source: Portsmouth, Kutz, Hill 2025, the `E_EON` listing
 /// with `exact = false`.
@@ -616,7 +616,7 @@ fn uniform_weight<T: Real>(wo_z: T, sigma: T) -> T {
 /// are drawn and one selected, so lanes equal scalars.
 ///
 /// Domain: wo a unit vector, sigma in [0, 1] (NaN outside), u1, u2 in [0, 1]. Edges: wi.z > 0
-/// with a positive pdf for every u1, u2 (`tests/diffuse_eon_sampling.rs`); pdf 0 where
+/// with a positive pdf for every u1, u2 (`tests/diffuse/eon_sampling.rs`); pdf 0 where
 /// wo.z <= 0 (discard the sample); sigma = 0 is cosine sampling (P_u = 0). NaN in any input
 /// gives NaN.
 ///

@@ -27,7 +27,7 @@
 //! # Energy (rho = 1)
 //! Neither of the paper's two closed forms conserves energy. Directional albedo
 //! rho(theta_o) = integral f cos(theta_i) dwi with rho = 1, measured by
-//! `cargo test --no-default-features --features diffuse,integrate --test diffuse_oren_nayar_energy -- --nocapture`:
+//! `cargo test --no-default-features --features diffuse,integrate --test diffuse oren_nayar_energy:: -- --nocapture`:
 //!
 //! | sigma (rad) | qualitative, theta_o = 0 / 60 / 85 / 89.9 deg | full, theta_o = 0 / 60 / 85 / 89.9 deg |
 //! |---|---|---|
@@ -133,7 +133,7 @@ fn qualitative_kernel<T: Real>(n_dot_v: T, n_dot_l: T, v_dot_l: T, rho: T, a: T,
 /// with A = [`oren_nayar_a`] and B = [`oren_nayar_b`]. The second line is the first rewritten
 /// exactly (s = sin(theta_i) sin(theta_o) cos(phi), cos(beta) = max(n.v, n.l)): no acos, no
 /// trigonometry, and no division by sin(theta) at the poles, where phi is undefined but
-/// s = 0. `tests/diffuse_oren_nayar_reference.rs` checks it against the angle form.
+/// s = 0. `tests/diffuse/oren_nayar_reference.rs` checks it against the angle form.
 ///
 /// Arguments: cosines `n_dot_v`, `n_dot_l`, `v_dot_l` of unit vectors; albedo `rho` in [0, 1];
 /// `sigma` >= 0 and finite, the standard deviation of the facet slope angle in radians
@@ -603,7 +603,7 @@ fn fujii_kernel<T: Real>(n_dot_v: T, n_dot_l: T, v_dot_l: T, rho: T, sigma: T) -
 /// term for s < 0 (qualitative Oren-Nayar drops it, falling back to Lambert for forward
 /// scattering, which shows as dark rings on spheres) and normalizes so the directional albedo
 /// at grazing view (n.v -> 0, where the s / t term is largest) is exactly rho: with rho <= 1
-/// the albedo never exceeds 1 (checked by `tests/diffuse_oren_nayar_energy.rs`).
+/// the albedo never exceeds 1 (checked by `tests/diffuse/oren_nayar_energy.rs`).
 ///
 /// `sigma` is Fujii's sigma', the ratio B / A of the non-Lambertian to the Lambertian term,
 /// in [0, 1] as his note defines it; it is not the slope-angle deviation of [`oren_nayar`].

@@ -32,7 +32,7 @@
 //! 1 to 0 across it, so the error falls only like N^-0.8: max error over a 16 x 16 subgrid of
 //! the 64 x 64 cells 1.2e-3, 4.1e-4, 1.2e-4, 6.2e-5 at 1024, 4096, 16384, 32768 samples.
 //! [`DEFAULT_SAMPLES`] = 32768 meets 1e-4 on every cell of a 64 x 64 table
-//! (`cargo test --test ibl_dfg_accuracy -- --nocapture`).
+//! (`cargo test --test ibl dfg_accuracy:: -- --nocapture`).
 //!
 //! # Table layout
 //! [`table`] writes `[A, B, E]` per cell, row-major with n_dot_v along a row: cell
@@ -56,7 +56,7 @@ use crate::vec3::V3;
 
 /// Samples per cell that keep every entry of a 64 x 64 table within 1e-4 of the exact
 /// integrals: measured max error 6.9e-5 (E; A 5.9e-5, B 3.8e-5; RMS 1.2e-5), against a
-/// reference converged to 1.3e-5 (`cargo test --test ibl_dfg_accuracy -- --nocapture`).
+/// reference converged to 1.3e-5 (`cargo test --test ibl dfg_accuracy:: -- --nocapture`).
 /// Cost: about 2 ms per cell, 8 s for the 64 x 64 table on one core.
 pub const DEFAULT_SAMPLES: u32 = 32768;
 
@@ -75,7 +75,7 @@ fn radical_inverse(i: u32) -> f64 {
 /// Deterministic: the same arguments give the same bits. A, B >= 0 and E <= 1 (every weight
 /// lies in [0, 1]); E -> 1 as alpha -> 0 (a mirror reflects everything). Error about
 /// N^-0.8 (module docs): with [`DEFAULT_SAMPLES`] within 1e-4 of the exact integrals over the
-/// cells of a 64 x 64 table (`tests/ibl_dfg_accuracy.rs`).
+/// cells of a 64 x 64 table (`tests/ibl/dfg_accuracy.rs`).
 ///
 /// Domain: n_dot_v in [-1, 1] (above 1 clamped to 1; at or below 0 the view is at or below
 /// the horizon and every term is 0); alpha in [0, +inf) finite, clamped to [ALPHA_MIN,
@@ -227,7 +227,7 @@ fn fit_guard<T: Real>(n_dot_v: T, roughness: T, v: T) -> T {
 /// Specular albedo F0 A + F90 B (UE4 takes F90 = saturate(50 F0.g): [`specular`]). Fitted to
 /// UE4's table (GGX, Schlick-Smith G with k = alpha / 2), so it differs from the
 /// height-correlated table by its fit error plus that model difference: max and RMS error
-/// against a 64 x 64 [`table`] in `cargo test --test ibl_dfg_approximations -- --nocapture`.
+/// against a 64 x 64 [`table`] in `cargo test --test ibl dfg_approximations:: -- --nocapture`.
 /// B goes slightly negative (-0.0024 at r = 1, NoV = 1) as in the source.
 ///
 /// Domain: n_dot_v in [-1, 1] (above 1 clamped to 1; at or below 0, both terms 0); roughness
@@ -254,7 +254,7 @@ pub fn karis_mobile<T: Real>(n_dot_v: T, roughness: T) -> [T; 2] {
 /// 0.04 A + B = min(rx^2, 2^(-9.28 NoV)) rx + ry with rx = 1 - r, ry = 0.0425 - 0.0275 r
 /// (that is a004: 0.04 A + B = 0.9984 a004 + 0.0016 - 0.00088 r, within 0.0016 of it).
 /// Same domain as [`karis_mobile`]; its error against 0.04 A + B of the [`table`] is printed by
-/// `cargo test --test ibl_dfg_approximations -- --nocapture`.
+/// `cargo test --test ibl dfg_approximations:: -- --nocapture`.
 #[inline]
 #[must_use]
 pub fn karis_mobile_nonmetal<T: Real>(n_dot_v: T, roughness: T) -> T {

@@ -5,7 +5,7 @@
 //!
 //! A single-scattering microfacet BRDF drops the light that reflects more than once between
 //! microfacets: with F = 1, GGX at alpha = 1 returns only 1 - ln 2 = 0.31 of the light at
-//! normal incidence (`cargo test --test cook_torrance_energy -- --nocapture` prints the loss
+//! normal incidence (`cargo test --test cook_torrance energy:: -- --nocapture` prints the loss
 //! table). The compensations below add the missing energy back as a smooth extra lobe.
 //!
 //! # The albedo E and its average
@@ -22,7 +22,7 @@
 //! Distribution of Visible Normals", JCGT 7(4)). Its error falls as 1 / samples: about
 //! 5e-4 at 1024 samples, 3e-5 to 1e-4 at 16384 and 8e-6 to 2.8e-5 at 65536 against the adaptive cubature of
 //! `brdf::integrate::directional_albedo` (`cargo test --features ibl,integrate,cook-torrance
-//! --test ibl_energy_tables -- --nocapture`). [`e_avg_ggx_estimate`] integrates E with
+//! --test ibl energy_tables:: -- --nocapture`). [`e_avg_ggx_estimate`] integrates E with
 //! 32-point Gauss-Legendre in x = sqrt(mu).
 //!
 //! E has a shape worth knowing: for F = 1 it is 1 at grazing (mu -> 0: every visible facet
@@ -39,7 +39,7 @@
 //! r = sqrt(alpha)) and mu_j = (j / 31)^2 (uniform in sqrt(mu)); `E_GGX_TABLE[32 i + j]` =
 //! E(mu_j, alpha_i), `E_AVG_GGX_TABLE[i]` = E_avg(alpha_i). [`e_ggx`] and [`e_avg_ggx`]
 //! interpolate them bilinearly (linearly) in (sqrt(mu), sqrt(alpha)): no setup, no allocation.
-//! Lookup error against the estimator (`--test ibl_energy_tables`): max abs 0.06 over the
+//! Lookup error against the estimator (`--test ibl energy_tables::`): max abs 0.06 over the
 //! whole square, all of it at theta_o > 89 degrees and alpha < 0.002 (the dip narrower than
 //! a cell); 0.0016 for theta_o <= 85 degrees; E_avg within 1e-5 at the nodes.
 //!
@@ -300,7 +300,7 @@ fn lookup_e_avg(alpha: f64) -> f64 {
 /// above 1 reads the alpha = 1 row (E keeps falling beyond it: use [`e_ggx_estimate`] for
 /// such surfaces). NaN for NaN input, alpha < 0 or +inf. Output in [0.3, 1]. Error: max abs
 /// 0.0016 against [`e_ggx_estimate`] for mu >= cos(85 degrees), 0.06 over the whole square
-/// (module docs; `cargo test --features ibl,integrate,cook-torrance --test ibl_energy_tables
+/// (module docs; `cargo test --features ibl,integrate,cook-torrance --test ibl energy_tables::
 /// -- --nocapture`).
 #[inline]
 #[must_use]
@@ -414,7 +414,7 @@ pub fn fresnel_avg_conductor(eta: f64, k: f64) -> f64 {
 /// `f_avg` in [0, 1] (F_avg of the Fresnel term the single scattering uses). NaN for NaN in
 /// any input, alpha < 0 or +inf, f_avg outside [0, 1]. With f_avg = 1 the sum has albedo
 /// in [0.9995, 1.0006] for alpha in [0, 1] and theta_o <= 85 degrees
-/// (`cargo test --features ibl,integrate,cook-torrance --test ibl_energy_furnace --
+/// (`cargo test --features ibl,integrate,cook-torrance --test ibl energy_furnace:: --
 /// --nocapture`).
 #[inline]
 #[must_use]
@@ -538,7 +538,7 @@ pub fn fdez_aguera<T: Real>(a: T, b: T, f0: T) -> (T, T) {
 /// E(mu, alpha) of GGX with the height-correlated Smith G2 and F = 1 on the grid of the
 /// module docs: `E_GGX_TABLE[32 i + j]` = E(mu_j = (j / 31)^2, alpha_i = max((i / 31)^2,
 /// ALPHA_MIN)), from `e_table(out, 32, 32, 65536)` rounded to f32 (QMC error at most 2.8e-5;
-/// `tests/ibl_energy_tables.rs` regenerates it). Row-major in alpha: a 32 x 32 texture with mu
+/// `tests/ibl/energy_tables.rs` regenerates it). Row-major in alpha: a 32 x 32 texture with mu
 /// along u and alpha along v, for a renderer that uploads it.
 #[rustfmt::skip]
 pub static E_GGX_TABLE: [f32; E_TABLE_SIZE * E_TABLE_SIZE] = [
@@ -578,7 +578,7 @@ pub static E_GGX_TABLE: [f32; E_TABLE_SIZE * E_TABLE_SIZE] = [
 
 /// E_avg(alpha_i) = 2 integral_0^1 E(mu, alpha_i) mu dmu for alpha_i = max((i / 31)^2,
 /// ALPHA_MIN), from `e_avg_table(out, 65536)` rounded to f32 (error about 3e-5;
-/// `tests/ibl_energy_tables.rs` regenerates it).
+/// `tests/ibl/energy_tables.rs` regenerates it).
 #[rustfmt::skip]
 pub static E_AVG_GGX_TABLE: [f32; E_TABLE_SIZE] = [
     0.99999994, 0.99999326, 0.99990606, 0.9995473, 0.99873483, 0.997204, 0.9947042, 0.9909925, 0.9858137, 0.9789392, 0.970167, 0.95932937, 0.94628525, 0.9309446, 0.9132544, 0.8932162, 0.87088096, 0.84635234, 0.8197813, 0.79136765, 0.76135194, 0.7300091, 0.697638, 0.6645539, 0.63107556, 0.59751594, 0.56417245, 0.5313187, 0.4991982, 0.46802017, 0.4379573, 0.40914473,

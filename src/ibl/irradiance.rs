@@ -9,8 +9,8 @@
 //! z = blue). The quadratures are `f64` table builders; the per-pixel kernels
 //! ([`Sh9::eval`], [`Sh9::irradiance`], [`sh9_basis`]) are generic over [`Real`].
 //!
-//! Accuracy of SH9 irradiance (max relative error over 2 000 normals; `cargo test --test
-//! ibl_irradiance_sh9_error -- --nocapture`): 1.7% for a gradient sky (horizon colour mixing
+//! Accuracy of SH9 irradiance (max relative error over 2 000 normals; `cargo test --test ibl
+//! irradiance_sh9_error:: -- --nocapture`): 1.7% for a gradient sky (horizon colour mixing
 //! linearly with elevation to zenith blue above and to a dark ground below), against the
 //! quadrature; 123% for a 3-degree sun disc of radiance 300 on that sky dimmed to a tenth,
 //! against the disc's closed form (SH9 spreads the disc over the sphere, so normals facing

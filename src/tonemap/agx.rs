@@ -248,7 +248,7 @@ fn per_lane<T: Real>(c: V3<T>, f: impl Fn([f64; 3]) -> [f64; 3]) -> V3<T> {
 /// Peers: Wrensch's Shadertoy (cd3XWr) and three.js's unused `agx()` / `agxEotf()` are this
 /// function: within 2.2e-5 of the shader evaluated in f32, all of it the shader's own f32
 /// rounding of the monomial polynomial (terms up to 40 cancel), and within 6.6e-7 with that
-/// polynomial summed in f64 (`tests/tonemap_peers.rs`). Where the shader raises the curve's
+/// polynomial summed in f64 (`tests/tonemap/against_peers.rs`). Where the shader raises the curve's
 /// negative toe to a power (channels below about 2e-4 under a look), it returns NaN.
 /// bevy's `Tonemapping::AgX` samples a LUT and is not this curve. Evaluated in f64 lane by lane
 /// (in double words on f64 lanes; see the module docs).

@@ -23,7 +23,7 @@
 //! channel extremes (Reinhard on luminance, Reinhard-Jodie, ACES Hill, PBR Neutral, AgX) are
 //! monotonic along every grey ramp and in each channel's own input, but raising one channel
 //! can lower another's output (that is what desaturation and luminance preservation do).
-//! Two designs bend even that, by amounts `tests/tonemap_properties.rs` measures and bounds:
+//! Two designs bend even that, by amounts `tests/tonemap/properties.rs` measures and bounds:
 //! PBR Neutral's darkest-channel offset lets that channel's own output fall by up to 2e-7
 //! while another channel is compressed. AgX's outset matrices (negative off-diagonals) lower a
 //! channel that has reached the top of the log encoding by up to 3.5e-5 as its input grows
@@ -36,8 +36,8 @@
 //! Engines differ in where they apply exposure, whether a pre-exposure or a gamma is part of
 //! the operator, per-channel versus luminance forms, and the working colour space. Each
 //! operator's documentation states the expression that reproduces three.js, Filament and bevy
-//! where they ship the same curve; `cargo test --test tonemap_peers -- --nocapture` checks
-//! every such mapping against transcriptions of the engines' own shader code on about 13,000
+//! where they ship the same curve; `cargo test --test tonemap against_peers:: -- --nocapture`
+//! checks every such mapping against transcriptions of the engines' own shader code on about 13,000
 //! colours (greys from 0 to 1e4, saturated colours, random colours), to 4.8e-7 (four f32 ULPs
 //! of 1) for the rational curves and to the engines' own f32 rounding for AgX, and the
 //! report prints the table. The traps: three.js's `ACESFilmicToneMapping` at exposure e is
@@ -113,7 +113,8 @@ impl Exposure {
     }
 
     /// The factor scene values are multiplied by. bevy's camera exposure, exp2(-EV100) / 1.2,
-    /// is [`Exposure::from_ev100`]`(ev100).value()` to f32 rounding (`tests/tonemap_peers.rs`).
+    /// is [`Exposure::from_ev100`]`(ev100).value()` to f32 rounding
+    /// (`tests/tonemap/against_peers.rs`).
     #[inline]
     #[must_use]
     pub fn value(self) -> f64 {

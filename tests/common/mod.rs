@@ -115,3 +115,27 @@ pub fn assert_fits(name: &str, (stat, dof): (f64, usize)) {
         "{name}: chi^2 = {stat} >= {critical} (dof {dof})"
     );
 }
+
+/// Proptest's default configuration, its failures persisted beside the test module's source file
+/// ([`persist_beside_source`]).
+pub fn proptest_config() -> proptest::test_runner::Config {
+    persist_beside_source(proptest::test_runner::Config::default())
+}
+
+/// [`proptest_config`] with `cases` cases per test.
+pub fn proptest_cases(cases: u32) -> proptest::test_runner::Config {
+    persist_beside_source(proptest::test_runner::Config::with_cases(cases))
+}
+
+/// `config` with failing cases persisted beside the module that found them, in
+/// `tests/<binary>/<module>.proptest-regressions`, and read back from there. Proptest's default
+/// rule stops at the binary's `main.rs` and writes `tests/proptest-regressions/<module>.txt`, where
+/// `fresnel/domains.rs` and `microfacet/domains.rs` would share one file.
+fn persist_beside_source(config: proptest::test_runner::Config) -> proptest::test_runner::Config {
+    proptest::test_runner::Config {
+        failure_persistence: Some(Box::new(
+            proptest::test_runner::FileFailurePersistence::WithSource("proptest-regressions"),
+        )),
+        ..config
+    }
+}

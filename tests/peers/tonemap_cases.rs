@@ -1,7 +1,7 @@
 //! The comparisons of `brdf::tonemap` against the peer transcriptions in `tonemap.rs`: one
 //! [`Case`] per (our operator, peer operator, mapping), the shared input grid, and the
-//! difference statistics. Used by `tests/tonemap_peers.rs` (which asserts the bounds) and by the
-//! report's tonemapping section (which prints the table).
+//! difference statistics. Used by `tests/tonemap/against_peers.rs` (which asserts the bounds) and
+//! by the report's tonemapping section (which prints the table).
 //!
 //! Every difference is |ours - peer| per channel after both are clamped to [0, 1] (ours always
 //! is; where a peer does not clamp, its output is clamped here, the frame buffer's clamp). Ours

@@ -1,6 +1,6 @@
 //! The scene of the image-based-lighting comparison (a procedural sky with a sun, four
 //! surfaces, the reflectance integral, the split-sum path and the single-sample bug), shared
-//! by `tests/ibl_seed_s0.rs` and the report's IBL section.
+//! by `tests/ibl/seed_s0.rs` and the report's IBL section.
 #![allow(dead_code)]
 
 use brdf::frame::Frame;

@@ -20,7 +20,7 @@ pub fn dfg_section() {
     outln!(
         "A and B weigh F0 and F90 (albedo = F0 A + F90 B), E = A + B is the albedo with F = 1; \
          {} samples per entry (`ibl::dfg::DEFAULT_SAMPLES`, every entry of a 64 x 64 table \
-         within 1e-4: `cargo test --test ibl_dfg_accuracy -- --nocapture`).\n",
+         within 1e-4: `cargo test --test ibl dfg_accuracy:: -- --nocapture`).\n",
         dfg::DEFAULT_SAMPLES
     );
     let novs = [0.05, 0.25, 0.5, 0.75, 1.0];
@@ -150,8 +150,8 @@ pub fn irradiance_section() {
     outln!(
         "SH9 irradiance against quadrature over 200 normals, max relative error: the sky alone \
          {:.2}%, the sky with its sun {:.1}% (band-2 truncation of a 2.5-degree sun of \
-         radiance 2000; `cargo test --test ibl_irradiance_sh9_error -- --nocapture` bounds SH9 on its own \
-         sky and sun).\n",
+         radiance 2000; `cargo test --test ibl irradiance_sh9_error:: -- --nocapture` bounds SH9 \
+         on its own sky and sun).\n",
         100.0 * worst_sky,
         100.0 * worst_sun
     );

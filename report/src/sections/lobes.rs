@@ -74,8 +74,8 @@ pub fn diffuse_albedo() -> Result<(), ParamError> {
     outln!(
         "\nOren-Nayar (both published forms) and Burley's diffuse are fits, not energy-conserving \
          models: their albedo leaves 1 in both directions. EON adds the multiple-scattering lobe \
-         that brings Fujii's form back to 1. Full tables: `cargo test --test diffuse_oren_nayar_energy \
-         --test diffuse_eon_energy --test diffuse_burley_energy -- --nocapture`."
+         that brings Fujii's form back to 1. Full tables: `cargo test --test diffuse -- \
+         --nocapture oren_nayar_energy:: eon_energy:: burley_energy::`."
     );
     Ok(())
 }
@@ -186,7 +186,7 @@ pub fn material_furnace() -> Result<(), ParamError> {
          The glTF dielectric, whose diffuse layer is weighted by 1 - F(v.h), is not energy \
          conserving at grazing view: its specular layer reflects F(theta_o) while the diffuse \
          layer keeps most of its albedo, as the glTF specification notes for its fresnel_mix. \
-         Full tables and the other couplings: `cargo test --test material_energy -- --nocapture`."
+         Full tables and the other couplings: `cargo test --test material energy:: -- --nocapture`."
     );
     Ok(())
 }

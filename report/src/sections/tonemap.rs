@@ -1,7 +1,7 @@
 //! The report's tonemapping-peers section: each of our operators against the engine or paper
 //! operator it reproduces (three.js, Filament, bevy, and the authors' own code), under the
-//! stated mapping, as the largest difference over the grid `tests/tonemap_peers.rs` asserts on.
-//! The peers are f32 transcriptions of each source, named with repository, path and commit in
+//! stated mapping, as the largest difference over the grid `tests/tonemap/against_peers.rs` asserts
+//! on. The peers are f32 transcriptions of each source, named with repository, path and commit in
 //! `tests/peers/tonemap.rs`; the cases and the grid are in `tests/peers/tonemap_cases.rs`.
 
 #[path = "../../../tests/peers/tonemap_cases.rs"]
@@ -19,7 +19,7 @@ pub fn peers_table() {
         "Grid: about 13,000 colours (greys from 0 to 1e4, dense near 0 and each operator's \
          knees; saturated colours with one or two channels 0; random colours up to 1e4). \
          Differences are after clamping both sides to [0, 1]. \"exact\" rows are held to f32 \
-         rounding by `cargo test --test tonemap_peers`; the others document a mismatch."
+         rounding by `cargo test --test tonemap against_peers::`; the others document a mismatch."
     );
     outln!();
     outln!(

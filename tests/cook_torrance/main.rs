@@ -1,0 +1,12 @@
+//! The Cook-Torrance assembly (`brdf::cook_torrance`). One test binary per family, so the family
+//! links once: `cargo test --test cook_torrance` runs it, `cargo test --test cook_torrance
+//! <module>::` runs one module. Each module keeps its own feature gate.
+//!
+//! - `energy`: energy and reciprocity, by the public integrators
+//! - `rgb`: the Fresnel-specific dot-product forms against the generic assembly
+
+#[path = "../common/mod.rs"]
+mod common;
+
+mod energy;
+mod rgb;
