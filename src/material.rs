@@ -257,11 +257,12 @@ fn kernel<T: Real>(
     )
 }
 
-/// Set where any component of either direction is NaN (a NaN tangent component would
-/// otherwise vanish in the half vector's normalization fallback).
+/// Set where any component of either direction is NaN or infinite (a NaN tangent component
+/// would otherwise vanish in the half vector's normalization fallback, and an infinite one
+/// would normalize to a plausible axis; crate docs, "Bad input", rules 1 and 5).
 #[inline]
-fn any_nan<T: Real>(a: V3<T>, b: V3<T>) -> T::Mask {
-    a.x.is_nan() | a.y.is_nan() | a.z.is_nan() | b.x.is_nan() | b.y.is_nan() | b.z.is_nan()
+fn any_nonfinite<T: Real>(a: V3<T>, b: V3<T>) -> T::Mask {
+    crate::vec3::any_nonfinite3(a) | crate::vec3::any_nonfinite3(b)
 }
 
 /// The metallic-roughness BRDF from dot products (the shader form): RGB
@@ -547,7 +548,7 @@ impl<T: Real> MetallicRoughness<T> {
             self.dielectric_f0(),
             self.dielectric_f90(),
             self.coupling,
-            any_nan(wo, wi),
+            any_nonfinite(wo, wi),
         )
     }
 
@@ -602,7 +603,7 @@ impl<T: Real> MetallicRoughness<T> {
         let p = T::select(no_specular, T::ZERO, p);
         // The selects above would turn a NaN view into a plausible probability, and only wo.z
         // reaches them: a NaN in any component of wo gives NaN.
-        nan_unless(!any_nan(wo, wo), p)
+        nan_unless(!any_nonfinite(wo, wo), p)
     }
 
     /// The one-sample MIS pdf (solid angle) of [`sample`](Self::sample):
@@ -624,7 +625,7 @@ impl<T: Real> MetallicRoughness<T> {
         let ggx = self.ggx();
         let p_spec = sampling::reflect_pdf(sampling::visible_normal_pdf(&ggx, wo, h), wo.dot(h));
         let p_diff = sampling::cosine_hemisphere_pdf(wi);
-        nan_unless(!any_nan(wo, wi), lerp(p_diff, p_spec, p))
+        nan_unless(!any_nonfinite(wo, wi), lerp(p_diff, p_spec, p))
     }
 
     /// Draws wi for the view `wo` by one-sample lobe selection and returns (wi, pdf) with pdf
@@ -658,7 +659,7 @@ impl<T: Real> MetallicRoughness<T> {
         let (wi_diff, _) = sampling::cosine_hemisphere(u, u2);
         let wi = V3::select(specular, wo.mirror(m), wi_diff);
         // A diffuse wi does not depend on wo: a NaN view must still give a NaN direction.
-        let bad = any_nan(wo, wo);
+        let bad = any_nonfinite(wo, wo);
         let nan = T::splat(f64::NAN);
         let wi = V3::new(
             T::select(bad, nan, wi.x),

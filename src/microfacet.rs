@@ -30,7 +30,7 @@ use crate::domain::{nan_unless, nan_where};
 use crate::error::{ParamError, require};
 use crate::real::Real;
 use crate::vec3::V3;
-use crate::vec3::any_nan3;
+use crate::vec3::any_nonfinite3;
 
 /// The smallest alpha the kernels evaluate with; smaller (including 0) is clamped up to it. As a
 /// perceptual roughness ([`alpha_from_perceptual`]): r = 0.01. Filament clamps higher, at r = 0.045
@@ -125,7 +125,7 @@ pub trait Microfacet<T: Real> {
         let den = co * ci + ci * self.cos_lambda(wo) + co * self.cos_lambda(wi);
         let den4 = T::splat(4.0) * den;
         let v = T::select(den4.simd_gt(T::ZERO), den4.recip().min(T::MAX), T::ZERO);
-        nan_where(any_nan3(wo) | any_nan3(wi) | den.is_nan(), v)
+        nan_where(any_nonfinite3(wo) | any_nonfinite3(wi) | den.is_nan(), v)
     }
 
     /// Distribution of visible normals D_wo(m) = G1(wo) max(0, wo.m) D(m) / |wo.z| (Heitz
@@ -141,7 +141,7 @@ pub trait Microfacet<T: Real> {
         let v = T::select(c.simd_gt(T::ZERO), g1_over_cos, T::ZERO);
         // Each factor is finite; the product of a large 1 / |wo.z| and a large D may not be.
         let value = (v * wo.dot(m).max(T::ZERO)).min(T::MAX) * self.d(m);
-        nan_where(any_nan3(wo) | cl.is_nan(), value.min(T::MAX))
+        nan_where(any_nonfinite3(wo) | cl.is_nan(), value.min(T::MAX))
     }
 }
 
@@ -235,10 +235,10 @@ pub fn alpha_from_perceptual<T: Real>(roughness: T) -> T {
 
 /// alpha to perceptual roughness r = sqrt(alpha) (the inverse of [`alpha_from_perceptual`] between
 /// the clamps): the value a glTF `roughnessFactor` or a UE4 `Roughness` slider holds for a given
-/// alpha. Domain alpha in [0, +inf); alpha < 0 or NaN gives NaN, +inf gives +inf. Correctly rounded
-/// (one square root).
+/// alpha. Domain alpha in [0, +inf) finite; alpha < 0, +inf or NaN gives NaN (crate docs,
+/// "Bad input", rule 5). Correctly rounded (one square root).
 #[inline]
 #[must_use]
 pub fn perceptual_from_alpha<T: Real>(alpha: T) -> T {
-    nan_unless(alpha.simd_ge(T::ZERO), alpha.sqrt())
+    nan_unless(alpha_ok(alpha), alpha.sqrt())
 }

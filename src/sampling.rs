@@ -43,7 +43,7 @@
 use crate::domain::nan_where;
 use crate::real::Real;
 use crate::vec3::V3;
-use crate::vec3::any_nan3;
+use crate::vec3::any_nonfinite3;
 
 #[cfg(feature = "beckmann")]
 use crate::beckmann::Beckmann;
@@ -87,7 +87,7 @@ pub fn cosine_hemisphere<T: Real>(u1: T, u2: T) -> (V3<T>, T) {
 #[inline]
 #[must_use]
 pub fn cosine_hemisphere_pdf<T: Real>(w: V3<T>) -> T {
-    nan_where(any_nan3(w), w.z.max(T::ZERO) * T::FRAC_1_PI)
+    nan_where(any_nonfinite3(w), w.z.max(T::ZERO) * T::FRAC_1_PI)
 }
 
 /// pdf of a reflected direction whose half vector m was drawn with pdf `pdf_m`:
@@ -97,9 +97,12 @@ pub fn cosine_hemisphere_pdf<T: Real>(w: V3<T>) -> T {
 #[inline]
 #[must_use]
 pub fn reflect_pdf<T: Real>(pdf_m: T, v_dot_h: T) -> T {
+    // v.h is a cosine: +-inf counts as +-1 (rules 3 and 5), not as a 0 pdf.
+    let v_dot_h = crate::domain::unit_if_inf(v_dot_h);
     let den = T::splat(4.0) * v_dot_h.abs();
     let v = T::select(den.simd_gt(T::ZERO), (pdf_m / den).min(T::MAX), T::ZERO);
-    nan_where(!pdf_m.simd_ge(T::ZERO) | v_dot_h.is_nan(), v)
+    let pdf_ok = pdf_m.simd_ge(T::ZERO) & pdf_m.simd_lt(T::INFINITY);
+    nan_where(!pdf_ok | v_dot_h.is_nan(), v)
 }
 
 /// Microfacet normal from a slope (sx, sy) of the unit-roughness distribution, stretched by
@@ -210,7 +213,7 @@ pub fn ggx_vndf<T: Real>(ggx: &Ggx<T>, wo: V3<T>, u1: T, u2: T) -> (V3<T>, T) {
     let lift = (T::ONE - p1 * p1 - p2 * p2).sqrt_nonneg();
     let nh = t1 * p1 + t2 * p2 + vh * lift;
     let m = V3::new(ax * nh.x, ay * nh.y, nh.z.max(T::ZERO)).normalize_or(V3::unit_z());
-    let bad = any_nan3(wo) | u1.is_nan() | u2.is_nan() | ax.is_nan() | ay.is_nan();
+    let bad = any_nonfinite3(wo) | u1.is_nan() | u2.is_nan() | ax.is_nan() | ay.is_nan();
     nan_sample(bad, m, visible_normal_pdf(ggx, wo, m))
 }
 
@@ -236,7 +239,7 @@ pub fn ggx_vndf_spherical_cap<T: Real>(ggx: &Ggx<T>, wo: V3<T>, u1: T, u2: T) ->
     let c = V3::new(sin_theta * phi.cos(), sin_theta * phi.sin(), z);
     let h = c + v;
     let m = V3::new(ax * h.x, ay * h.y, h.z.max(T::ZERO)).normalize_or(V3::unit_z());
-    let bad = any_nan3(wo) | u1.is_nan() | u2.is_nan() | ax.is_nan() | ay.is_nan();
+    let bad = any_nonfinite3(wo) | u1.is_nan() | u2.is_nan() | ax.is_nan() | ay.is_nan();
     nan_sample(bad, m, visible_normal_pdf(ggx, wo, m))
 }
 
@@ -411,7 +414,7 @@ pub fn beckmann_vndf<T: Real>(beckmann: &Beckmann<T>, wo: V3<T>, u1: T, u2: T) -
     let rx = cos_p * sx - sin_p * sy;
     let ry = sin_p * sx + cos_p * sy;
     let m = normal_from_slope(rx, ry, ax, ay);
-    let bad = any_nan3(wo) | u1.is_nan() | u2.is_nan() | ax.is_nan() | ay.is_nan();
+    let bad = any_nonfinite3(wo) | u1.is_nan() | u2.is_nan() | ax.is_nan() | ay.is_nan();
     nan_sample(bad, m, visible_normal_pdf(beckmann, wo, m))
 }
 
@@ -437,7 +440,7 @@ fn vndf_reflection_pdf<T: Real, M: Microfacet<T> + ?Sized>(dist: &M, wo: V3<T>, 
     // wo.h = |wo + wi| / 2 >= 0 analytically; 0 only for wi = -wo, where h is undefined.
     let visible = c.simd_gt(T::ZERO) & wo.dot(h).simd_gt(T::ZERO);
     let p = T::select(visible, (inv * dist.d(h)).min(T::MAX), T::ZERO);
-    nan_where(any_nan3(wo) | any_nan3(wi), p)
+    nan_where(any_nonfinite3(wo) | any_nonfinite3(wi), p)
 }
 
 /// The sample of a reflection sampler without its Fresnel factor: (wi, pdf, G2 / G1(wo),
@@ -459,11 +462,13 @@ fn reflection_parts<T: Real, M: Microfacet<T> + ?Sized>(
     (wi, pdf, ratio, wo.dot(m).saturate())
 }
 
-/// The weight F G2 / G1 of one channel: NaN where F is NaN or negative, capped at MAX.
+/// The weight F G2 / G1 of one channel: NaN where F is NaN, negative or infinite (rule 5),
+/// capped at MAX.
 #[cfg(any(feature = "ggx", feature = "beckmann"))]
 #[inline]
 fn weigh<T: Real>(ratio: T, f: T) -> T {
-    crate::domain::nan_unless(f.simd_ge(T::ZERO), (ratio * f).min(T::MAX))
+    let ok = f.simd_ge(T::ZERO) & f.simd_lt(T::INFINITY);
+    crate::domain::nan_unless(ok, (ratio * f).min(T::MAX))
 }
 
 /// Samples the Cook-Torrance reflection lobe of a GGX surface and returns (wi, pdf, weight):

@@ -110,7 +110,7 @@ fn half_cosines_about<T: Real>(n: V3<T>, v: V3<T>, l: V3<T>) -> (T, T) {
     let len = s.length();
     let n_dot_h = T::select(len.simd_eq(T::ZERO), T::ONE, n.dot(s) / len);
     // s = 0 selects 1 without reading n: a NaN normal must still give NaN.
-    let n_dot_h = crate::domain::nan_where(crate::vec3::any_nan3(n), n_dot_h);
+    let n_dot_h = crate::domain::nan_where(crate::vec3::any_nonfinite3(n), n_dot_h);
     (n_dot_h, (T::HALF * len).min(T::ONE))
 }
 

@@ -577,3 +577,13 @@ impl V3<f64x4> {
 pub(crate) fn any_nan3<T: Real>(v: V3<T>) -> T::Mask {
     v.x.is_nan() | v.y.is_nan() | v.z.is_nan()
 }
+
+/// True in lanes where any component of `v` is NaN or infinite: the guard of every kernel that
+/// takes a direction, a normal or a colour (crate docs, "Bad input", rules 1 and 5). A
+/// direction (inf, 0, 1) has no one meaning, so it gives NaN like a NaN component; the `V3`
+/// arithmetic helpers keep [`any_nan3`] and IEEE arithmetic.
+#[inline]
+#[must_use]
+pub(crate) fn any_nonfinite3<T: Real>(v: V3<T>) -> T::Mask {
+    !(v.x.is_finite() & v.y.is_finite() & v.z.is_finite())
+}

@@ -38,12 +38,12 @@
 //! As everywhere in this crate, a parameter outside its domain gives NaN for every pair of
 //! directions, those below the horizon included, and a NaN input gives NaN.
 
-use crate::domain::{above_horizon, checked_unit, in_unit, nan_unless, nan_where};
+use crate::domain::{above_horizon, checked_unit, in_unit, nan_unless, nan_where, unit_if_inf};
 use crate::dw::Dw;
 use crate::error::{ParamError, require};
 use crate::real::Real;
 use crate::vec3::V3;
-use crate::vec3::any_nan3;
+use crate::vec3::any_nonfinite3;
 
 /// c1 = 1/2 - 2/(3 pi) = G(0)/pi: Fujii's normalization A = 1/(1 + c1 sigma) makes the FON
 /// albedo exactly 1 at grazing incidence and below 1 elsewhere.
@@ -155,6 +155,8 @@ fn eon_with<T: Real>(
     sigma: T,
     pi_loss: impl Fn(T) -> Dw<T>,
 ) -> T {
+    // An infinite v.l counts as +-1 (rules 3 and 5) before the shape forms inf * 0.
+    let v_dot_l = unit_if_inf(v_dot_l);
     let rho = checked_unit(rho);
     let sigma = checked_unit(sigma);
     let mu_o = n_dot_v.clamp(T::ZERO, T::ONE);
@@ -563,7 +565,7 @@ pub fn eon_cltc_sample<T: Real>(wo: V3<T>, sigma: T, u1: T, u2: T) -> (V3<T>, T)
     // The pdf does not depend on wo's azimuth, but a NaN there (which makes wi.x NaN) must
     // still reach it.
     let pdf = nan_unless(in_unit(sigma), above_horizon(wo.z, wi.z, pdf));
-    nan_sample(any_nan3(wo), (wi, pdf))
+    nan_sample(any_nonfinite3(wo), (wi, pdf))
 }
 
 /// (NaN, NaN) where `bad`: a NaN in a component of wo that the sampler's formula does not
@@ -587,7 +589,7 @@ pub fn eon_cltc_pdf<T: Real>(wo: V3<T>, wi: V3<T>, sigma: T) -> T {
     let ltc = Cltc::new(wo, checked_unit(sigma));
     let pdf = nan_unless(in_unit(sigma), above_horizon(wo.z, wi.z, ltc.pdf(wi)));
     // Below the horizon the guard gives 0 whatever wo.x, wo.y, wi.x, wi.y are: keep their NaN.
-    nan_where(any_nan3(wo) | any_nan3(wi), pdf)
+    nan_where(any_nonfinite3(wo) | any_nonfinite3(wi), pdf)
 }
 
 /// Probability of the uniform lobe in EON's sampling mixture, the paper's fit
@@ -638,7 +640,7 @@ pub fn eon_sample<T: Real>(wo: V3<T>, sigma: T, u1: T, u2: T) -> (V3<T>, T) {
     let wu = V3::new(sin_theta * cos_phi, sin_theta * sin_phi, z);
     let (wc, _) = ltc.sample_disk(clamp_u((u1 - p_u) / (T::ONE - p_u)), cos_phi, sin_phi);
     let wi = V3::select(uniform, wu, wc);
-    nan_sample(any_nan3(wo), (wi, mixture_pdf(&ltc, p_u, wo, wi)))
+    nan_sample(any_nonfinite3(wo), (wi, mixture_pdf(&ltc, p_u, wo, wi)))
 }
 
 #[inline]
@@ -647,7 +649,7 @@ fn mixture_pdf<T: Real>(ltc: &Cltc<T>, p_u: T, wo: V3<T>, wi: V3<T>) -> T {
     let pdf = p_u.mul_add(T::splat(0.5) * T::FRAC_1_PI - pdf_c, pdf_c);
     // p_u is NaN for a bad sigma, and the horizon guard ignores wo.x, wo.y, wi.x, wi.y: keep
     // their NaN below the horizon too.
-    let bad = p_u.is_nan() | any_nan3(wo) | any_nan3(wi);
+    let bad = p_u.is_nan() | any_nonfinite3(wo) | any_nonfinite3(wi);
     nan_where(bad, above_horizon(wo.z, wi.z, pdf))
 }
 
@@ -717,7 +719,7 @@ impl<T: Real> Eon<T> {
     #[inline]
     #[must_use]
     pub fn albedo(&self, wo: V3<T>) -> T {
-        nan_where(any_nan3(wo), eon_albedo(wo.z, self.rho, self.sigma))
+        nan_where(any_nonfinite3(wo), eon_albedo(wo.z, self.rho, self.sigma))
     }
 
     /// Directional albedo of the fitted model at wo ([`eon_albedo_approx`]); NaN where a
@@ -725,7 +727,7 @@ impl<T: Real> Eon<T> {
     #[inline]
     #[must_use]
     pub fn albedo_approx(&self, wo: V3<T>) -> T {
-        nan_where(any_nan3(wo), eon_albedo_approx(wo.z, self.rho, self.sigma))
+        nan_where(any_nonfinite3(wo), eon_albedo_approx(wo.z, self.rho, self.sigma))
     }
 
     /// A direction wi and its solid-angle pdf ([`eon_sample`]).

@@ -35,7 +35,7 @@ use crate::domain::nan_where;
 use crate::frame::Frame;
 use crate::real::Real;
 use crate::vec3::V3;
-use crate::vec3::any_nan3;
+use crate::vec3::any_nonfinite3;
 
 /// Node `k` (descending: k = 0 is the largest) and weight of the `order`-point Gauss-Legendre
 /// rule on [-1, 1], which integrates polynomials of degree <= 2 order - 1 exactly.
@@ -205,7 +205,7 @@ pub fn sh9_basis<T: Real>(d: V3<T>) -> [T; 9] {
         c(C2) * x * z,
         c(C4) * (x * x - y * y),
     ];
-    let bad = any_nan3(d);
+    let bad = any_nonfinite3(d);
     y.map(|v| nan_where(bad, v))
 }
 
@@ -329,7 +329,7 @@ impl<T: Real> Sh9<T> {
         let e = l22 * (k[0] * (x * x - y * y)) + l20 * (k[2] * z * z) + l00 * k[3] - l20 * k[4]
             + cross
             + linear;
-        let bad = any_nan3(n);
+        let bad = any_nonfinite3(n);
         V3::new(
             nan_where(bad, e.x),
             nan_where(bad, e.y),
