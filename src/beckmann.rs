@@ -381,6 +381,9 @@ impl<T: Real> Beckmann<T> {
     /// and a = |z| / r, of `w`.
     #[inline]
     fn a_of_w(&self, w: V3<T>) -> (Rel<T>, Arg<T>) {
+        // A zero vector takes the horizon's a = 0 (G1 = 0, the capped Lambda pole) instead of
+        // a = 0 / 0.
+        let w = crate::vec3::horizon_if_zero3(w);
         let (ax, ay) = self.clamped_alphas();
         let px = Rel::exact(ax).mul(Rel::exact(w.x));
         let py = Rel::exact(ay).mul(Rel::exact(w.y));

@@ -215,6 +215,8 @@ impl<T: Real> Ggx<T> {
     /// separable G2 multiplies two of them.
     #[inline]
     fn g1_dw(&self, w: V3<T>) -> Rel<T> {
+        // A zero vector takes the horizon's G1, 0, instead of 0 / 0.
+        let w = crate::vec3::horizon_if_zero3(w);
         let (ax, ay) = self.clamped_alphas();
         let c = Rel::exact(w.z.abs());
         let px = Rel::exact(ax).mul(Rel::exact(w.x));
@@ -331,6 +333,8 @@ impl<T: Real> Microfacet<T> for Ggx<T> {
     /// |z| Lambda = q / (2 (sqrt(z^2 + q) + |z|)): alpha sin(theta) / 2 at the horizon.
     #[inline]
     fn cos_lambda(&self, w: V3<T>) -> T {
+        // A zero vector takes the horizon's value instead of 0 / 0.
+        let w = crate::vec3::horizon_if_zero3(w);
         let c = w.z.abs();
         let q = self.projected_roughness2(w);
         nan_where(

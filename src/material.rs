@@ -625,7 +625,11 @@ impl<T: Real> MetallicRoughness<T> {
         let ggx = self.ggx();
         let p_spec = sampling::reflect_pdf(sampling::visible_normal_pdf(&ggx, wo, h), wo.dot(h));
         let p_diff = sampling::cosine_hemisphere_pdf(wi);
-        nan_unless(!any_nonfinite(wo, wi), lerp(p_diff, p_spec, p))
+        // A zero-length wo or wi is no direction: pdf 0 (without this, 0 / 0 in P for wo and a
+        // specular density about h = wo for wi).
+        let zero = crate::vec3::is_zero3(wo) | crate::vec3::is_zero3(wi);
+        let pdf = T::select(zero, T::ZERO, lerp(p_diff, p_spec, p));
+        nan_unless(!any_nonfinite(wo, wi), pdf)
     }
 
     /// Draws wi for the view `wo` by one-sample lobe selection and returns (wi, pdf) with pdf

@@ -438,7 +438,8 @@ fn vndf_reflection_pdf<T: Real, M: Microfacet<T> + ?Sized>(dist: &M, wo: V3<T>, 
         .recip()
         .min(T::MAX);
     // wo.h = |wo + wi| / 2 >= 0 analytically; 0 only for wi = -wo, where h is undefined.
-    let visible = c.simd_gt(T::ZERO) & wo.dot(h).simd_gt(T::ZERO);
+    // A zero-length wi has no reflection Jacobian: pdf 0, like wi = -wo (and wo = 0 has c = 0).
+    let visible = c.simd_gt(T::ZERO) & wo.dot(h).simd_gt(T::ZERO) & !crate::vec3::is_zero3(wi);
     let p = T::select(visible, (inv * dist.d(h)).min(T::MAX), T::ZERO);
     nan_where(any_nonfinite3(wo) | any_nonfinite3(wi), p)
 }

@@ -587,3 +587,20 @@ pub(crate) fn any_nan3<T: Real>(v: V3<T>) -> T::Mask {
 pub(crate) fn any_nonfinite3<T: Real>(v: V3<T>) -> T::Mask {
     !(v.x.is_finite() & v.y.is_finite() & v.z.is_finite())
 }
+
+/// True in lanes where `v` is the zero vector (every component +-0).
+#[inline]
+#[must_use]
+pub(crate) fn is_zero3<T: Real>(v: V3<T>) -> T::Mask {
+    v.x.simd_eq(T::ZERO) & v.y.simd_eq(T::ZERO) & v.z.simd_eq(T::ZERO)
+}
+
+/// `v`, or the horizon direction +x where `v` is the zero vector. A zero-length direction has
+/// cosine 0 with the normal, like a horizon direction, and the microfacet terms give it the
+/// horizon's value (G1 = 0, the capped Lambda pole) instead of the 0 / 0 of its zero
+/// components: finite input, finite output (crate docs, "Bad input", rule 5's last sentence).
+#[inline]
+#[must_use]
+pub(crate) fn horizon_if_zero3<T: Real>(v: V3<T>) -> V3<T> {
+    V3::select(is_zero3(v), V3::new(T::ONE, T::ZERO, T::ZERO), v)
+}

@@ -2636,3 +2636,69 @@ fn every_public_function_is_in_the_table_or_named_as_not_a_kernel() {
 fn tonemap_max_input_matches() {
     assert_eq!(TONEMAP_MAX_INPUT, brdf::tonemap::MAX_INPUT);
 }
+
+// ---------------------------------------------------------------------------------------
+// Degenerate directions: a zero-length wo or wi is finite input, so it gives finite output
+// (never NaN), and every sampler and pdf documents its pdf there: 0.
+
+/// Kernels that return a pdf, and which output holds it.
+fn pdf_output(name: &str) -> Option<usize> {
+    let sampler = name.contains("sample")
+        || name.contains("vndf")
+        || name.contains("_reflection")
+        || name.contains("d_cos(");
+    if name.contains("pdf") {
+        Some(0)
+    } else if sampler && !name.contains("sample_from") && !name.contains("prefilter::sample") {
+        Some(3)
+    } else {
+        None
+    }
+}
+
+fn zero_direction_sweep<T: Real>(ty: &str, failures: &mut Vec<String>, probes: &mut usize) {
+    for kern in table::<T>() {
+        for dir in ["wo", "wi", "dir"] {
+            let idx: Vec<usize> = (0..kern.args.len())
+                .filter(|&i| kern.args[i].name.starts_with(&format!("{dir}.")))
+                .collect();
+            if idx.len() != 3 {
+                continue;
+            }
+            let mut x: Vec<f64> = kern.args.iter().map(|a| a.valid).collect();
+            for &i in &idx {
+                x[i] = 0.0;
+            }
+            let out = (kern.f)(&splat_all::<T>(&x));
+            *probes += 1;
+            let flat: Vec<f64> = out.iter().flat_map(|&y| lanes(y)).collect();
+            let pdf_ok = pdf_output(&kern.name)
+                .is_none_or(|p| lanes(out[p]).iter().all(|&v| v == 0.0));
+            if !flat.iter().all(|y| y.is_finite()) || !pdf_ok {
+                failures.push(format!(
+                    "{} {ty} {dir} = (0, 0, 0) gave {}",
+                    kern.name,
+                    fmt_out(&flat)
+                ));
+            }
+        }
+    }
+}
+
+#[test]
+fn a_zero_length_direction_gives_finite_output_and_a_zero_pdf() {
+    let (mut failures, mut probes) = (Vec::new(), 0);
+    zero_direction_sweep::<f32>("f32", &mut failures, &mut probes);
+    zero_direction_sweep::<f64>("f64", &mut failures, &mut probes);
+    zero_direction_sweep::<f32x8>("f32x8", &mut failures, &mut probes);
+    zero_direction_sweep::<f64x4>("f64x4", &mut failures, &mut probes);
+    println!("{probes} zero-direction probes");
+    for f in &failures {
+        println!("FAIL {f}");
+    }
+    assert!(
+        failures.is_empty(),
+        "{} of {probes} zero-direction probes break the rule",
+        failures.len()
+    );
+}

@@ -99,6 +99,8 @@ pub fn pdf<T: Real>(dir: V3<T>, alpha: T) -> T {
     // dir = -z has no half vector; any horizontal one has D = 0, the limit from most sides.
     let h = V3::new(dir.x, dir.y, T::ONE + dir.z).normalize_or(V3::new(T::ONE, T::ZERO, T::ZERO));
     let d = Ggx::new_unchecked(alpha, alpha).d(h);
+    // A zero-length dir is no direction: pdf 0 (its h would be +z, the peak).
+    let d = T::select(crate::vec3::is_zero3(dir), T::ZERO, d);
     nan_where(any_nonfinite3(dir), d * T::splat(0.25))
 }
 
