@@ -436,7 +436,7 @@ impl<T: Real> Microfacet<T> for Beckmann<T> {
     /// Exact Lambda = (exp(-a^2) / (a sqrt(pi)) - erfc(a)) / 2 with a = |z| / (alpha(phi)
     /// sin(theta)) (Heitz 2014 eq. 83), evaluated without cancellation as
     /// exp(-a^2) K(a) / (2 sqrt(pi) a (a + K(a))) (see [`lambda`]). Pole at the horizon capped
-    /// at the largest finite value; 0 at the normal; NaN for NaN in any component.
+    /// at the largest finite value; 0 at the normal; NaN for a NaN or infinite component.
     #[inline]
     fn lambda(&self, w: V3<T>) -> T {
         let (_, x) = self.a_of_w(w);

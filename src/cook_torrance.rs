@@ -72,7 +72,7 @@ pub fn half_cosines<T: Real>(wo: V3<T>, wi: V3<T>) -> (T, T) {
 }
 
 /// D(h) V(wo, wi) capped at MAX (0 where either direction is at or below the horizon, NaN
-/// where any component is NaN) and v.h: the part of the BRDF every Fresnel form multiplies.
+/// where any component is NaN or infinite) and v.h: the part of the BRDF every Fresnel form multiplies.
 ///
 /// Why the cap: V is itself capped at MAX where both cosines are tiny, and D > 1 would then
 /// overflow the product to inf (and inf times a zero Fresnel to NaN).

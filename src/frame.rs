@@ -44,7 +44,7 @@ impl<T: Real> Frame<T> {
     /// Branch-free and continuous except across the plane n.z = 0, where it stays
     /// orthonormal to rounding (the Frisvad 2012 construction it improves on loses
     /// orthogonality near n = (0, 0, -1)). Domain: unit `n`; the error of the basis grows with
-    /// `| |n| - 1 |`. A NaN component of `n` gives a frame of NaN axes.
+    /// `| |n| - 1 |`. A NaN or infinite component of `n` gives a frame of NaN axes.
     ///
     /// Source: Duff, Burgess, Christensen, Hery, Kensler, Liani, Villemin 2017, "Building an
     /// Orthonormal Basis, Revisited", JCGT 6(1).

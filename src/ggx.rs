@@ -237,6 +237,8 @@ impl<T: Real> Ggx<T> {
     /// the working precision (Dekker's exact products).
     #[inline]
     fn smith_dw(&self, w: V3<T>) -> (T, Dw<T>, Dw<T>) {
+        // A zero vector takes the horizon's values (the capped Lambda pole) instead of 0 / 0.
+        let w = crate::vec3::horizon_if_zero3(w);
         let (ax, ay) = self.clamped_alphas();
         let c = w.z.abs();
         let q = Dw::product(ax, w.x).sq().add(Dw::product(ay, w.y).sq());

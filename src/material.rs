@@ -532,7 +532,7 @@ impl<T: Real> MetallicRoughness<T> {
 
     /// The BRDF f(wo, wi) in RGB (not multiplied by the cosine): the formula of the
     /// [module docs](self) with h = normalize(wo + wi). 0 where wo.z <= 0 or wi.z <= 0; NaN
-    /// where a component of wo or wi is NaN.
+    /// where a component of wo or wi is NaN or infinite.
     #[inline]
     #[must_use]
     pub fn eval(&self, wo: V3<T>, wi: V3<T>) -> V3<T> {
@@ -567,7 +567,7 @@ impl<T: Real> MetallicRoughness<T> {
     /// of kd base_color, with kd evaluated at the Schlick weight 1/21, the cosine-weighted
     /// hemispherical average of (1 - c)^5: the diffuse lobe sees v.h spread over its whole
     /// hemisphere, not n.v, so at grazing view its weight stays near its average while F(n.v)
-    /// goes to 1. NaN where a component of wo is NaN.
+    /// goes to 1. NaN where a component of wo is NaN or infinite.
     #[inline]
     #[must_use]
     pub fn specular_probability(&self, wo: V3<T>) -> T {
@@ -617,6 +617,10 @@ impl<T: Real> MetallicRoughness<T> {
     /// normals there, so pdf integrates to 1 over the whole sphere and to
     /// 1 - P x (the fraction of specular samples reflected below the horizon) over the upper
     /// hemisphere (`cargo test --test material_sampling -- --nocapture` prints both).
+    ///
+    /// A zero-length wo or wi is no direction: pdf 0 (so [`sample`](Self::sample) of a zero
+    /// wo returns a finite direction with pdf 0, and [`sample_weighted`](Self::sample_weighted)
+    /// weight 0). A NaN or infinite component of wo or wi gives NaN.
     #[inline]
     #[must_use]
     pub fn pdf(&self, wo: V3<T>, wi: V3<T>) -> T {
@@ -646,7 +650,7 @@ impl<T: Real> MetallicRoughness<T> {
     /// reflects a grazing view downwards). It is returned as drawn, with its true pdf > 0;
     /// [`eval`](Self::eval) is 0 there, so its weight is 0 and the path ends (pbrt-v4 returns
     /// no sample in that case, which is the same estimator). wo at or below the horizon: the
-    /// BRDF is 0 and every weight is 0. A NaN in any component of wo, or in u1 or u2, gives a
+    /// BRDF is 0 and every weight is 0. A NaN or infinite component of wo, or a NaN u1 or u2, gives a
     /// NaN direction and pdf.
     #[inline]
     #[must_use]

@@ -65,9 +65,13 @@ pub const ALPHA_MAX: f64 = 1e4;
 /// implementing type, given to its constructor as alpha, the width (not perceptual roughness:
 /// see the [roughness conventions](crate::microfacet#roughness-conventions) and
 /// [`alpha_from_perceptual`]).
+///
+/// Bad input (crate docs, "Bad input"): a NaN or infinite component of any direction gives NaN
+/// in every method; a zero-length direction has cosine 0 and takes the horizon's values
+/// (G1 = 0, Lambda capped at MAX, D_wo = 0), never the 0 / 0 of its components.
 pub trait Microfacet<T: Real> {
     /// NDF D(m); 0 for m.z <= 0. Normalized: integral of D(m) m.z dm = 1. Domain: m a unit
-    /// vector; NaN in any component gives NaN.
+    /// vector; a NaN or infinite component gives NaN.
     fn d(&self, m: V3<T>) -> T;
 
     /// Smith Lambda(w) >= 0, a function of |w.z| (symmetric under w -> -w); its pole at the
@@ -130,7 +134,7 @@ pub trait Microfacet<T: Real> {
 
     /// Distribution of visible normals D_wo(m) = G1(wo) max(0, wo.m) D(m) / |wo.z| (Heitz
     /// 2014, eq. 38). It integrates to 1 over m for every wo with wo.z != 0; 0 when wo.z = 0;
-    /// capped at the largest finite value; NaN for NaN in any component of either vector.
+    /// capped at the largest finite value; NaN for a NaN or infinite component of either vector.
     #[inline]
     #[must_use]
     fn d_visible(&self, wo: V3<T>, m: V3<T>) -> T {

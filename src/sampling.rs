@@ -162,7 +162,9 @@ pub fn d_cos_pdf<T: Real, M: Microfacet<T> + ?Sized>(dist: &M, m: V3<T>) -> T {
 }
 
 /// pdf of the visible-normal samplers: D_wo(m) (`Microfacet::d_visible`), with wo mirrored into
-/// the upper hemisphere as the samplers do.
+/// the upper hemisphere as the samplers do. 0 for wo at the horizon or of zero length (a
+/// visible-normal sampler given the zero vector returns a finite normal with this pdf, 0);
+/// NaN for a NaN or infinite component of wo.
 #[cfg(any(feature = "ggx", feature = "beckmann"))]
 #[inline]
 #[must_use]
@@ -554,8 +556,9 @@ pub fn ggx_reflection_rgb<T: Real>(
 /// Domain: unit local-frame vectors. Integrates to 1 over the whole sphere of wi for every
 /// wo above the horizon; where wi is below the horizon it is the density of the samples
 /// reflected there (> 0), for which the weight is 0. 0 where wo.z <= 0 (the lobe is
-/// reflection only and the sampler returns pdf 0 there) and where wi = -wo. Capped at the
-/// largest finite value. NaN for NaN in any component of wo or wi.
+/// reflection only and the sampler returns pdf 0 there, a zero-length wo included), where
+/// wi = -wo and where wi is the zero vector. Capped at the largest finite value. NaN for a
+/// NaN or infinite component of wo or wi.
 #[cfg(feature = "ggx")]
 #[inline]
 #[must_use]
@@ -626,8 +629,8 @@ pub fn beckmann_reflection_rgb<T: Real>(
 /// pdf (solid angle) of [`beckmann_reflection`] and [`beckmann_reflection_rgb`]:
 /// G1(wo) D(h) / (4 wo.z) with h = normalize(wo + wi); form, domain and edges as
 /// `ggx_reflection_pdf`: integrates to 1 over the sphere of wi for wo above the horizon, > 0
-/// below the horizon (where the weight is 0), 0 where wo.z <= 0 or wi = -wo, capped at the
-/// largest finite value, NaN for NaN in any component.
+/// below the horizon (where the weight is 0), 0 where wo.z <= 0, wi = -wo or wi = 0, capped at the
+/// largest finite value, NaN for a NaN or infinite component.
 #[cfg(feature = "beckmann")]
 #[inline]
 #[must_use]

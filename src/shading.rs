@@ -103,7 +103,7 @@ impl<T: Real> Cosines<T> {
 }
 
 /// n.h and v.h from s = v + l: v.h = |s| / 2 (clamped to 1), n.h = n.s / |s|; s = 0 gives
-/// (1, 0). NaN in any component gives NaN in both.
+/// (1, 0). A NaN or infinite component gives NaN in both.
 #[inline]
 fn half_cosines_about<T: Real>(n: V3<T>, v: V3<T>, l: V3<T>) -> (T, T) {
     let s = v + l;
@@ -147,7 +147,7 @@ pub struct ShadingPoint<T> {
 
 impl<T: Real> ShadingPoint<T> {
     /// The shading point of unit normal `n` and unit view direction `v` (world space, `v`
-    /// pointing away from the surface towards the viewer). A NaN component of `n` gives an
+    /// pointing away from the surface towards the viewer). A NaN or infinite component of `n` gives an
     /// all-NaN frame; a NaN in `v` a NaN `wo`.
     #[inline]
     #[must_use]

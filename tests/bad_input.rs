@@ -14,6 +14,11 @@
 //!   (`tests/lanes_vs_scalar.rs` holds the per-function lane bounds; this only shows no lane
 //!   leaks into another).
 //!
+//! A zero-length direction is finite input: another test sets each kernel's `wo`, `wi` or
+//! `dir` to (0, 0, 0) on every lane type and requires finite output and, from every sampler
+//! and pdf, pdf 0; a last one holds the microfacet verbs at the zero vector to their horizon
+//! values.
+//!
 //! A second test scans `src/` for `pub fn` and fails when one is neither in the table nor in
 //! the list of non-kernels (constructors, getters, integrators) below, so a new kernel cannot
 //! skip the rule.
@@ -2701,4 +2706,41 @@ fn a_zero_length_direction_gives_finite_output_and_a_zero_pdf() {
         "{} of {probes} zero-direction probes break the rule",
         failures.len()
     );
+}
+
+/// The microfacet verbs of one distribution at the zero vector: the horizon's values.
+#[cfg(all(feature = "ggx", feature = "beckmann"))]
+fn zero_vector_is_the_horizon_for<T: Real, M: brdf::microfacet::Microfacet<T>>(dist: &M) {
+    let zero = V3::splat(T::ZERO);
+    let horizon = V3::new(T::ONE, T::ZERO, T::ZERO);
+    let up = V3::new(T::ZERO, T::splat(0.6), T::splat(0.8));
+    let same = |a: T, b: T, what: &str| {
+        for i in 0..T::LANES {
+            let (a, b): (f64, f64) = (a.lane(i).into(), b.lane(i).into());
+            assert!(a.is_finite() && a.to_bits() == b.to_bits(), "{what}: {a} vs {b}");
+        }
+    };
+    same(dist.g1(zero), dist.g1(horizon), "g1");
+    same(dist.lambda(zero), dist.lambda(horizon), "lambda");
+    same(dist.cos_lambda(zero), dist.cos_lambda(horizon), "cos_lambda");
+    same(dist.g2_correlated(zero, up), dist.g2_correlated(horizon, up), "g2_correlated");
+    same(dist.g2_separable(zero, up), dist.g2_separable(horizon, up), "g2_separable");
+    same(dist.g2_correlated(up, zero), dist.g2_correlated(up, horizon), "g2_correlated wi");
+    same(dist.v_correlated(zero, up), dist.v_correlated(horizon, up), "v_correlated");
+    same(dist.v_correlated(up, zero), dist.v_correlated(up, horizon), "v_correlated wi");
+    same(dist.d_visible(zero, up), T::ZERO, "d_visible");
+}
+
+#[cfg(all(feature = "ggx", feature = "beckmann"))]
+#[test]
+fn a_zero_vector_takes_the_horizon_values_of_every_microfacet_verb() {
+    fn all<T: Real>() {
+        let a = T::splat(0.3);
+        zero_vector_is_the_horizon_for(&brdf::ggx::Ggx::new(a, a).unwrap());
+        zero_vector_is_the_horizon_for(&brdf::beckmann::Beckmann::new(a, a).unwrap());
+    }
+    all::<f32>();
+    all::<f64>();
+    all::<f32x8>();
+    all::<f64x4>();
 }

@@ -288,7 +288,7 @@ fn nan_is_reported_and_negative_input_is_clamped_on_every_lane_type() {
             assert!(all_nan(gamma_decode(T::splat(0.5), T::splat(g))));
         }
         assert!(all_nan(color::luminance(V3::new(T::ONE, nan, T::ONE))));
-        for x in [-1.0, -0.0, -1e-30, -f64::MAX] {
+        for x in [-1.0, -0.0, -1e-30, -1e30] {
             let x = T::splat(x);
             assert!(all_zero(srgb_oetf(x)) && all_zero(srgb_eotf(x)) && all_zero(rec709_oetf(x)));
             assert!(all_zero(gamma_encode(x, T::splat(2.2))));

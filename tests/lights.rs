@@ -185,7 +185,7 @@ fn polynomial_attenuation_has_its_documented_edges() {
     assert_eq!(p(0.0, 2.0, 1.0, 1.0), 0.5);
     assert_eq!(p(3.0, 1.0, 0.0, 1.0), 0.1);
     assert_eq!(p(3.0, 1.0, 2.0, 0.5), 1.0 / (1.0 + 6.0 + 4.5));
-    assert_eq!(p(f64::MAX, 1.0, 0.5, 0.0), 0.0);
+    assert!(p(f64::MAX, 1.0, 0.5, 0.0) <= 2.0 / f64::MAX);
     assert_eq!(p(f64::MAX, 2.0, 0.0, 0.0), 0.5, "constant only: no 0 x inf");
     assert_eq!(p(f64::MAX, 1.0, 0.0, 1.0), 0.0);
     assert_eq!(lights::polynomial::<f32>(f32::MAX, 1.0, 0.0, 0.0), 1.0);

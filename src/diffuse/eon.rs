@@ -580,7 +580,8 @@ fn nan_sample<T: Real>(bad: T::Mask, (wi, pdf): (V3<T>, T)) -> (V3<T>, T) {
 /// (adj(M) w).z) / (pi s), with w = wi in wo's azimuthal frame and adj(M) = det(M) M^-1.
 ///
 /// Domain: wo, wi unit vectors, sigma in [0, 1] (NaN outside). 0 where wi.z <= 0 or
-/// wo.z <= 0; NaN in any input gives NaN. Integrates to 1 over the upper hemisphere.
+/// wo.z <= 0 (a zero-length wo or wi included); NaN in any input, or an infinite component of
+/// wo or wi, gives NaN. Integrates to 1 over the upper hemisphere.
 ///
 /// Source: Portsmouth, Kutz, Hill 2025, the `cltc_pdf` listing.
 #[inline]
@@ -657,7 +658,8 @@ fn mixture_pdf<T: Real>(ltc: &Cltc<T>, p_u: T, wo: V3<T>, wi: V3<T>) -> T {
 /// and pdf_CLTC as there ([`eon_cltc_pdf`]).
 ///
 /// Domain: wo, wi unit vectors, sigma in [0, 1] (NaN outside). 0 where wi.z <= 0 or
-/// wo.z <= 0; NaN in any input gives NaN. Integrates to 1 over the upper hemisphere.
+/// wo.z <= 0 (a zero-length wo or wi included); NaN in any input, or an infinite component of
+/// wo or wi, gives NaN. Integrates to 1 over the upper hemisphere.
 ///
 /// Source: Portsmouth, Kutz, Hill 2025, the `pdf_EON` listing.
 #[inline]
@@ -715,7 +717,7 @@ impl<T: Real> Eon<T> {
         super::nan_if_nan_dir(wo, wi, f)
     }
 
-    /// Directional albedo at wo ([`eon_albedo`]); NaN where a component of wo is NaN.
+    /// Directional albedo at wo ([`eon_albedo`]); NaN where a component of wo is NaN or infinite.
     #[inline]
     #[must_use]
     pub fn albedo(&self, wo: V3<T>) -> T {
@@ -723,7 +725,7 @@ impl<T: Real> Eon<T> {
     }
 
     /// Directional albedo of the fitted model at wo ([`eon_albedo_approx`]); NaN where a
-    /// component of wo is NaN.
+    /// component of wo is NaN or infinite.
     #[inline]
     #[must_use]
     pub fn albedo_approx(&self, wo: V3<T>) -> T {

@@ -133,7 +133,7 @@ impl<T: Real> Lambert<T> {
     }
 
     /// f(wo, wi) = rho / pi for wo and wi above the horizon, else 0 ([`lambert`]); NaN where
-    /// any component of wo or wi is NaN.
+    /// any component of wo or wi is NaN or infinite.
     #[inline]
     #[must_use]
     pub fn eval(&self, wo: V3<T>, wi: V3<T>) -> T {

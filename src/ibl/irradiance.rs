@@ -188,7 +188,7 @@ const BAND: [usize; 9] = [0, 1, 1, 1, 2, 2, 2, 2, 2];
 /// Tricks") negate k = 1, 3, 5, 7. z is the axis of the zonal harmonics (Y_1^0, Y_2^0): with
 /// a y-up renderer, pass (x, y, z) permuted or accept that "up" is z here.
 ///
-/// Domain: a unit d (not normalised here). NaN in any component gives NaN in all nine.
+/// Domain: a unit d (not normalised here). A NaN or infinite component gives NaN in all nine.
 #[inline]
 #[must_use]
 pub fn sh9_basis<T: Real>(d: V3<T>) -> [T; 9] {

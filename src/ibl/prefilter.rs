@@ -91,7 +91,8 @@ pub fn hammersley(i: u32, n: u32) -> (f64, f64) {
 /// Integrates to 1 over the sphere. D is evaluated on the vector h
 /// ([`Microfacet::d`]), not on n.h: near the peak of a
 /// narrow lobe 1 - (n.h)^2 would cancel (in f32, 1e-5 relative error of the pdf at
-/// alpha = 0.05). 0 at dir = -z (h horizontal); NaN for NaN in any input or an alpha outside
+/// alpha = 0.05). 0 at dir = -z (h horizontal) and for the zero vector (no direction); NaN for
+/// NaN in any input, an infinite component of dir or an alpha outside
 /// [0, +inf) finite (alpha clamped to [ALPHA_MIN, ALPHA_MAX] as in [`ggx::d`](crate::ggx::d)).
 #[inline]
 #[must_use]
