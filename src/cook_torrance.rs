@@ -81,7 +81,10 @@ fn masked_dv<T: Real, M: Microfacet<T> + ?Sized>(m: &M, wo: V3<T>, wi: V3<T>) ->
     let (h, v_dot_h) = half_vector(wo, wi);
     let dv = (m.d(h) * m.v_correlated(wo, wi)).min(T::MAX);
     let dv = above_horizon(wo.z, wi.z, dv);
-    (nan_where(any_nonfinite3(wo) | any_nonfinite3(wi), dv), v_dot_h)
+    (
+        nan_where(any_nonfinite3(wo) | any_nonfinite3(wi), dv),
+        v_dot_h,
+    )
 }
 
 /// f = D(h) V(wo, wi) F, with F given by the caller as a function of v.h (any Fresnel form of

@@ -101,9 +101,5 @@ pub(crate) fn finite_dirs<T: Real>(wo: crate::vec3::V3<T>, wi: crate::vec3::V3<T
 #[inline]
 #[must_use]
 pub(crate) fn unit_if_inf<T: Real>(c: T) -> T {
-    T::select(
-        c.abs().simd_eq(T::INFINITY),
-        T::ONE.copysign(c),
-        c,
-    )
+    T::select(c.abs().simd_eq(T::INFINITY), T::ONE.copysign(c), c)
 }

@@ -315,7 +315,10 @@ impl<T: Real> Microfacet<T> for Ggx<T> {
         let ok = den.hi.simd_gt(T::ZERO);
         let g2 = quot(num, Dw::select(ok, den, Dw::exact(T::ONE))) * inv_sc;
         let g2 = T::select(ok, g2.min(T::ONE), T::ZERO);
-        nan_where(any_nonfinite3(wo) | any_nonfinite3(wi) | den.hi.is_nan(), g2)
+        nan_where(
+            any_nonfinite3(wo) | any_nonfinite3(wi) | den.hi.is_nan(),
+            g2,
+        )
     }
 
     /// V = G2 / (4 |o.z| |i.z|) = 0.5 / (|i.z| s_o + |o.z| s_i) with s = sqrt(z^2 + q)
@@ -419,7 +422,11 @@ pub fn d_fast<T: Real>(n_dot_h: T, alpha: T) -> T {
 #[must_use]
 pub fn d_aniso<T: Real>(n_dot_h: T, t_dot_h: T, b_dot_h: T, alpha_x: T, alpha_y: T) -> T {
     // As cosines, before `Ggx::d` reads them as a direction (where an infinity is NaN).
-    let m = V3::new(unit_if_inf(t_dot_h), unit_if_inf(b_dot_h), unit_if_inf(n_dot_h));
+    let m = V3::new(
+        unit_if_inf(t_dot_h),
+        unit_if_inf(b_dot_h),
+        unit_if_inf(n_dot_h),
+    );
     Ggx::new_unchecked(alpha_x, alpha_y).d(m)
 }
 

@@ -591,6 +591,7 @@ pub(crate) fn any_nonfinite3<T: Real>(v: V3<T>) -> T::Mask {
 /// True in lanes where `v` is the zero vector (every component +-0).
 #[inline]
 #[must_use]
+#[allow(dead_code)] // used by the microfacet, sampling, material and IBL features
 pub(crate) fn is_zero3<T: Real>(v: V3<T>) -> T::Mask {
     v.x.simd_eq(T::ZERO) & v.y.simd_eq(T::ZERO) & v.z.simd_eq(T::ZERO)
 }
@@ -601,6 +602,7 @@ pub(crate) fn is_zero3<T: Real>(v: V3<T>) -> T::Mask {
 /// components: finite input, finite output (crate docs, "Bad input", rule 5's last sentence).
 #[inline]
 #[must_use]
+#[allow(dead_code)] // used by the microfacet, sampling, material and IBL features
 pub(crate) fn horizon_if_zero3<T: Real>(v: V3<T>) -> V3<T> {
     V3::select(is_zero3(v), V3::new(T::ONE, T::ZERO, T::ZERO), v)
 }

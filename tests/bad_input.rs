@@ -2068,16 +2068,48 @@ fn clamped(kernel: &str, name: &str) -> Option<[f64; 2]> {
 const INFINITY_EXEMPT: &[(&str, &str, &str)] = &[
     ("V3::dot", "", "vector arithmetic: the sum of products"),
     ("V3::cross", "", "vector arithmetic"),
-    ("V3::length_squared", "", "vector arithmetic: +inf is the length of an infinite vector"),
+    (
+        "V3::length_squared",
+        "",
+        "vector arithmetic: +inf is the length of an infinite vector",
+    ),
     ("V3::length", "", "vector arithmetic"),
-    ("V3::normalize_or", "", "vector arithmetic: the fallback covers only a zero length"),
+    (
+        "V3::normalize_or",
+        "",
+        "vector arithmetic: the fallback covers only a zero length",
+    ),
     ("V3::mirror", "", "vector arithmetic: 2 (a.n) n - a"),
-    ("V3::min_element", "", "a component comparison, like f32::min"),
-    ("V3::max_element", "", "a component comparison, like f32::max"),
-    ("Frame::to_local", "v.", "three dot products with the frame's axes (the normal is not exempt)"),
-    ("Frame::to_world", "v.", "a linear combination of the axes (the normal is not exempt)"),
-    ("color::mul", "", "a linear colour helper: one product per channel"),
-    ("color::luminance", "", "a linear colour helper: a weighted sum of the channels"),
+    (
+        "V3::min_element",
+        "",
+        "a component comparison, like f32::min",
+    ),
+    (
+        "V3::max_element",
+        "",
+        "a component comparison, like f32::max",
+    ),
+    (
+        "Frame::to_local",
+        "v.",
+        "three dot products with the frame's axes (the normal is not exempt)",
+    ),
+    (
+        "Frame::to_world",
+        "v.",
+        "a linear combination of the axes (the normal is not exempt)",
+    ),
+    (
+        "color::mul",
+        "",
+        "a linear colour helper: one product per channel",
+    ),
+    (
+        "color::luminance",
+        "",
+        "a linear colour helper: a weighted sum of the channels",
+    ),
 ];
 
 fn infinity_exempt(kernel: &str, name: &str) -> bool {
@@ -2677,8 +2709,8 @@ fn zero_direction_sweep<T: Real>(ty: &str, failures: &mut Vec<String>, probes: &
             let out = (kern.f)(&splat_all::<T>(&x));
             *probes += 1;
             let flat: Vec<f64> = out.iter().flat_map(|&y| lanes(y)).collect();
-            let pdf_ok = pdf_output(&kern.name)
-                .is_none_or(|p| lanes(out[p]).iter().all(|&v| v == 0.0));
+            let pdf_ok =
+                pdf_output(&kern.name).is_none_or(|p| lanes(out[p]).iter().all(|&v| v == 0.0));
             if !flat.iter().all(|y| y.is_finite()) || !pdf_ok {
                 failures.push(format!(
                     "{} {ty} {dir} = (0, 0, 0) gave {}",
@@ -2717,17 +2749,44 @@ fn zero_vector_is_the_horizon_for<T: Real, M: brdf::microfacet::Microfacet<T>>(d
     let same = |a: T, b: T, what: &str| {
         for i in 0..T::LANES {
             let (a, b): (f64, f64) = (a.lane(i).into(), b.lane(i).into());
-            assert!(a.is_finite() && a.to_bits() == b.to_bits(), "{what}: {a} vs {b}");
+            assert!(
+                a.is_finite() && a.to_bits() == b.to_bits(),
+                "{what}: {a} vs {b}"
+            );
         }
     };
     same(dist.g1(zero), dist.g1(horizon), "g1");
     same(dist.lambda(zero), dist.lambda(horizon), "lambda");
-    same(dist.cos_lambda(zero), dist.cos_lambda(horizon), "cos_lambda");
-    same(dist.g2_correlated(zero, up), dist.g2_correlated(horizon, up), "g2_correlated");
-    same(dist.g2_separable(zero, up), dist.g2_separable(horizon, up), "g2_separable");
-    same(dist.g2_correlated(up, zero), dist.g2_correlated(up, horizon), "g2_correlated wi");
-    same(dist.v_correlated(zero, up), dist.v_correlated(horizon, up), "v_correlated");
-    same(dist.v_correlated(up, zero), dist.v_correlated(up, horizon), "v_correlated wi");
+    same(
+        dist.cos_lambda(zero),
+        dist.cos_lambda(horizon),
+        "cos_lambda",
+    );
+    same(
+        dist.g2_correlated(zero, up),
+        dist.g2_correlated(horizon, up),
+        "g2_correlated",
+    );
+    same(
+        dist.g2_separable(zero, up),
+        dist.g2_separable(horizon, up),
+        "g2_separable",
+    );
+    same(
+        dist.g2_correlated(up, zero),
+        dist.g2_correlated(up, horizon),
+        "g2_correlated wi",
+    );
+    same(
+        dist.v_correlated(zero, up),
+        dist.v_correlated(horizon, up),
+        "v_correlated",
+    );
+    same(
+        dist.v_correlated(up, zero),
+        dist.v_correlated(up, horizon),
+        "v_correlated wi",
+    );
     same(dist.d_visible(zero, up), T::ZERO, "d_visible");
 }
 

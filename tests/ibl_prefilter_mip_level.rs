@@ -36,16 +36,7 @@ fn mip_level_matches_hand_computed_values() {
 
 #[test]
 fn mip_level_is_finite_and_non_negative_over_the_finite_domain() {
-    let pdfs = [
-        0.0,
-        1e-300,
-        1e-30,
-        1e-3,
-        1.0,
-        1e3,
-        1e30,
-        f64::MAX,
-    ];
+    let pdfs = [0.0, 1e-300, 1e-30, 1e-3, 1.0, 1e3, 1e30, f64::MAX];
     let counts = [1.0, 2.0, 1e6, 1e30, f64::MAX];
     let sizes = [1.0, 2.0, 4096.0, 1e30, f64::MAX];
     for &p in &pdfs {

@@ -44,7 +44,13 @@ fn bad_dirs(w: DVec3) -> Vec<(String, DVec3)> {
 #[test]
 fn smith_weak_furnace_with_a_bad_view_component_is_nan() {
     let wo = DVec3::new(0.36, 0.48, 0.8);
-    let d = |m: DVec3| if m.z > 0.0 { core::f64::consts::FRAC_1_PI } else { 0.0 };
+    let d = |m: DVec3| {
+        if m.z > 0.0 {
+            core::f64::consts::FRAC_1_PI
+        } else {
+            0.0
+        }
+    };
     // The good view integrates (a plausible value is what a NaN must not become).
     assert!((smith_weak_furnace(DVec3::Z, d, |_, _| 1.0).value - 1.0).abs() < 1e-3);
     for (what, w) in bad_dirs(wo) {
@@ -66,7 +72,10 @@ fn directional_albedo_with_a_bad_view_component_is_nan() {
         assert_nan(&what, directional_albedo(w, lambert));
         assert_nan(&what, directional_albedo_with(w, lambert, &cfg()));
         assert_nan(&what, directional_albedo_f32(w.as_vec3(), lambert32));
-        assert_nan(&what, directional_albedo_with_f32(w.as_vec3(), lambert32, &cfg()));
+        assert_nan(
+            &what,
+            directional_albedo_with_f32(w.as_vec3(), lambert32, &cfg()),
+        );
     }
 }
 

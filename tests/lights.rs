@@ -174,7 +174,10 @@ fn windowed_inverse_square_is_window_times_the_inverse_square() {
         1.0 / 9.0
     );
     assert_eq!(lights::windowed_inverse_square(3.0, 0.0, 0.01), 0.0);
-    assert_eq!(lights::windowed_inverse_square(f64::MAX, f64::MAX, 0.01), 0.0);
+    assert_eq!(
+        lights::windowed_inverse_square(f64::MAX, f64::MAX, 0.01),
+        0.0
+    );
     assert!(lights::windowed_inverse_square(3.0, f64::INFINITY, 0.01).is_nan());
     assert!(lights::windowed_inverse_square(f64::INFINITY, f64::INFINITY, 0.01).is_nan());
 }
@@ -346,7 +349,10 @@ fn parameters_outside_the_domain_give_nan() {
     nan(lights::windowed(f64::INFINITY, 1.0));
     nan(lights::windowed(1.0, f64::INFINITY));
     nan(lights::polynomial(f64::INFINITY, 1.0, 0.0, 0.0));
-    assert_eq!(lights::radiance(1.0, 1.0, f64::INFINITY), lights::radiance(1.0, 1.0, 1.0));
+    assert_eq!(
+        lights::radiance(1.0, 1.0, f64::INFINITY),
+        lights::radiance(1.0, 1.0, 1.0)
+    );
     assert_eq!(lights::radiance(1.0, 1.0, f64::NEG_INFINITY), 0.0);
     assert_eq!(lights::spot_cone(f64::INFINITY, 0.5, 0.9), 1.0);
     assert_eq!(lights::spot_cone(f64::NEG_INFINITY, 0.5, 0.9), 0.0);
@@ -390,7 +396,16 @@ fn lanes_equal_scalars() {
     }
     // Mixed lanes: each lane equals the scalar of its own inputs.
     let d = f32x8::from([0.0, 0.5, 1.0, 2.0, 4.0, 8.0, f32::INFINITY, 1e30]);
-    let r = f32x8::from([1.0, 0.0, 3.0, f32::MAX, 4.0, 9.0, f32::INFINITY, f32::INFINITY]);
+    let r = f32x8::from([
+        1.0,
+        0.0,
+        3.0,
+        f32::MAX,
+        4.0,
+        9.0,
+        f32::INFINITY,
+        f32::INFINITY,
+    ]);
     let v = lights::windowed(d, r);
     for l in 0..8 {
         assert_eq!(

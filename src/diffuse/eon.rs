@@ -729,7 +729,10 @@ impl<T: Real> Eon<T> {
     #[inline]
     #[must_use]
     pub fn albedo_approx(&self, wo: V3<T>) -> T {
-        nan_where(any_nonfinite3(wo), eon_albedo_approx(wo.z, self.rho, self.sigma))
+        nan_where(
+            any_nonfinite3(wo),
+            eon_albedo_approx(wo.z, self.rho, self.sigma),
+        )
     }
 
     /// A direction wi and its solid-angle pdf ([`eon_sample`]).

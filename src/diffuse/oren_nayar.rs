@@ -101,7 +101,11 @@ pub fn oren_nayar_b<T: Real>(sigma: T) -> T {
 #[inline]
 fn qualitative_kernel<T: Real>(n_dot_v: T, n_dot_l: T, v_dot_l: T, rho: T, a: T, b: T) -> T {
     // Infinite cosines count as +-1 (rules 3 and 5), before s = v.l - n.v n.l forms inf - inf.
-    let (n_dot_v, n_dot_l, v_dot_l) = (unit_if_inf(n_dot_v), unit_if_inf(n_dot_l), unit_if_inf(v_dot_l));
+    let (n_dot_v, n_dot_l, v_dot_l) = (
+        unit_if_inf(n_dot_v),
+        unit_if_inf(n_dot_l),
+        unit_if_inf(v_dot_l),
+    );
     // cos(phi) sin(alpha) tan(beta) = s / cos(beta) with cos(beta) = max(n.v, n.l): sin(alpha)
     // sin(beta) = sin(theta_i) sin(theta_o) whichever angle is larger. B s / cos(beta) + A
     // and the factor rho / pi are carried in double words from the exact product on and
@@ -221,7 +225,11 @@ impl<T: Real> OrenNayar<T> {
     #[inline]
     #[must_use]
     pub fn eval(&self, wo: V3<T>, wi: V3<T>) -> T {
-        super::nan_if_nan_dir(wo, wi, qualitative_kernel(wo.z, wi.z, wo.dot(wi), self.rho, self.a, self.b))
+        super::nan_if_nan_dir(
+            wo,
+            wi,
+            qualitative_kernel(wo.z, wi.z, wo.dot(wi), self.rho, self.a, self.b),
+        )
     }
 }
 
@@ -359,7 +367,11 @@ fn clamp_dw<T: Real>(x: Dw<T>, lo: T, hi: T) -> Dw<T> {
 #[inline]
 fn full_kernel<T: Real>(n_dot_v: T, n_dot_l: T, v_dot_l: T, rho: T, k: FullCoefficients<T>) -> T {
     // Infinite cosines count as +-1 (rules 3 and 5), before s = v.l - n.v n.l forms inf - inf.
-    let (n_dot_v, n_dot_l, v_dot_l) = (unit_if_inf(n_dot_v), unit_if_inf(n_dot_l), unit_if_inf(v_dot_l));
+    let (n_dot_v, n_dot_l, v_dot_l) = (
+        unit_if_inf(n_dot_v),
+        unit_if_inf(n_dot_l),
+        unit_if_inf(v_dot_l),
+    );
     // The whole of L1 and L2 is carried in double words and rounded once, at the end: where
     // both directions graze, C3 tan((alpha + beta) / 2) and cos(phi) C2 tan(beta) grow like
     // 1 / cos and are each a product of half a dozen factors (the angles, the sigma factor,
@@ -567,7 +579,11 @@ impl<T: Real> OrenNayarFull<T> {
     #[inline]
     #[must_use]
     pub fn eval(&self, wo: V3<T>, wi: V3<T>) -> T {
-        super::nan_if_nan_dir(wo, wi, full_kernel(wo.z, wi.z, wo.dot(wi), self.rho, self.k))
+        super::nan_if_nan_dir(
+            wo,
+            wi,
+            full_kernel(wo.z, wi.z, wo.dot(wi), self.rho, self.k),
+        )
     }
 }
 
@@ -578,7 +594,11 @@ const FUJII_K: (f64, f64) = (0.287_793_409_210_806_2, 1.311_911_778_345_499_2e-1
 #[inline]
 fn fujii_kernel<T: Real>(n_dot_v: T, n_dot_l: T, v_dot_l: T, rho: T, sigma: T) -> T {
     // Infinite cosines count as +-1 (rules 3 and 5), before s = v.l - n.v n.l forms inf - inf.
-    let (n_dot_v, n_dot_l, v_dot_l) = (unit_if_inf(n_dot_v), unit_if_inf(n_dot_l), unit_if_inf(v_dot_l));
+    let (n_dot_v, n_dot_l, v_dot_l) = (
+        unit_if_inf(n_dot_v),
+        unit_if_inf(n_dot_l),
+        unit_if_inf(v_dot_l),
+    );
     // rho / pi (t + sigma s) / (1 + K sigma) / t in double words, rounded once before the
     // division by t.
     let (k, tail) = FUJII_K;
@@ -679,6 +699,10 @@ impl<T: Real> OrenNayarFujii<T> {
     #[inline]
     #[must_use]
     pub fn eval(&self, wo: V3<T>, wi: V3<T>) -> T {
-        super::nan_if_nan_dir(wo, wi, fujii_kernel(wo.z, wi.z, wo.dot(wi), self.rho, self.sigma))
+        super::nan_if_nan_dir(
+            wo,
+            wi,
+            fujii_kernel(wo.z, wi.z, wo.dot(wi), self.rho, self.sigma),
+        )
     }
 }

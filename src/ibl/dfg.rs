@@ -392,7 +392,10 @@ pub fn specular<T: Real>(prefiltered: V3<T>, f0: V3<T>, f90: T, a: T, b: T) -> V
     let ok = f90_ok & a.is_finite() & b.is_finite();
     prefiltered.zip_map(f0, |l, f| {
         let v = cap(l * cap(f.mul_add(a, fb)));
-        nan_unless(ok & in_unit(f) & l.simd_ge(T::ZERO) & l.simd_lt(T::INFINITY), v)
+        nan_unless(
+            ok & in_unit(f) & l.simd_ge(T::ZERO) & l.simd_lt(T::INFINITY),
+            v,
+        )
     })
 }
 
