@@ -65,7 +65,7 @@ use crate::error::ParamError;
 use crate::microfacet::{Microfacet, clamp_alpha, validate_alphas};
 use crate::real::Real;
 use crate::vec3::V3;
-use crate::vec3::any_nan3;
+use crate::vec3::any_nonfinite3;
 
 /// 1 / (2 sqrt(pi)).
 const FRAC_1_2SQRT_PI: f64 = 0.282_094_791_773_878_14;
@@ -381,6 +381,9 @@ impl<T: Real> Beckmann<T> {
     /// and a = |z| / r, of `w`.
     #[inline]
     fn a_of_w(&self, w: V3<T>) -> (Rel<T>, Arg<T>) {
+        // A zero vector takes the horizon's a = 0 (G1 = 0, the capped Lambda pole) instead of
+        // a = 0 / 0.
+        let w = crate::vec3::horizon_if_zero3(w);
         let (ax, ay) = self.clamped_alphas();
         let px = Rel::exact(ax).mul(Rel::exact(w.x));
         let py = Rel::exact(ay).mul(Rel::exact(w.y));
@@ -427,17 +430,17 @@ impl<T: Real> Microfacet<T> for Beckmann<T> {
         let e = u.mul(u).add(v.mul(v)).div(z2);
         let den = Rel::exact(ax).mul(Rel::exact(ay)).mul(z2).mul(z2);
         let value = T::select(m.z.simd_gt(T::ZERO), exp_neg_over(e, den), T::ZERO);
-        nan_where(any_nan3(m) | ax.is_nan() | ay.is_nan(), value)
+        nan_where(any_nonfinite3(m) | ax.is_nan() | ay.is_nan(), value)
     }
 
     /// Exact Lambda = (exp(-a^2) / (a sqrt(pi)) - erfc(a)) / 2 with a = |z| / (alpha(phi)
     /// sin(theta)) (Heitz 2014 eq. 83), evaluated without cancellation as
     /// exp(-a^2) K(a) / (2 sqrt(pi) a (a + K(a))) (see [`lambda`]). Pole at the horizon capped
-    /// at the largest finite value; 0 at the normal; NaN for NaN in any component.
+    /// at the largest finite value; 0 at the normal; NaN for a NaN or infinite component.
     #[inline]
     fn lambda(&self, w: V3<T>) -> T {
         let (_, x) = self.a_of_w(w);
-        nan_where(any_nan3(w), lambda_from(x))
+        nan_where(any_nonfinite3(w), lambda_from(x))
     }
 
     /// G1 = 1 / (1 + Lambda) = a (a + K) / (a (a + K) + P) in the notation of [`lambda`]:
@@ -446,7 +449,7 @@ impl<T: Real> Microfacet<T> for Beckmann<T> {
     #[inline]
     fn g1(&self, w: V3<T>) -> T {
         let (_, x) = self.a_of_w(w);
-        nan_where(any_nan3(w), g1_from(x))
+        nan_where(any_nonfinite3(w), g1_from(x))
     }
 
     /// |z| Lambda = r exp(-a^2) K(a) / (2 sqrt(pi) (a + K(a))) with r = alpha(phi)
@@ -455,7 +458,7 @@ impl<T: Real> Microfacet<T> for Beckmann<T> {
     #[inline]
     fn cos_lambda(&self, w: V3<T>) -> T {
         // At the normal r = 0 and a = inf: P = 0 and the product is 0 * 0.
-        nan_where(any_nan3(w), self.cos_lambda_rel(w).value())
+        nan_where(any_nonfinite3(w), self.cos_lambda_rel(w).value())
     }
 
     /// V = 1 / (4 (|o.z| |i.z| + |i.z| |o.z| Lambda(o) + |o.z| |i.z| Lambda(i))) as in the
@@ -489,7 +492,7 @@ impl<T: Real> Microfacet<T> for Beckmann<T> {
             .value()
             .min(T::MAX);
         nan_where(
-            any_nan3(wo) | any_nan3(wi) | den.hi.is_nan(),
+            any_nonfinite3(wo) | any_nonfinite3(wi) | den.hi.is_nan(),
             T::select(ok, v, T::ZERO),
         )
     }
@@ -738,13 +741,14 @@ pub fn lambda_walter<T: Real>(n_dot_v: T, alpha: T) -> T {
 
 /// Blinn-Phong exponent n to the Beckmann alpha with the same lobe shape near the peak:
 /// alpha = sqrt(2 / (n + 2)) (Walter et al. 2007, section 5.2). The result is an alpha (RMS
-/// slope) for [`d`] and [`Beckmann`], not a perceptual roughness. Domain n in [0, +inf]
-/// (n = 0 gives alpha = 1, n = +inf gives 0); n < 0 or NaN gives NaN. Within 1 ULP.
+/// slope) for [`d`] and [`Beckmann`], not a perceptual roughness. Domain n in [0, +inf) finite
+/// (n = 0 gives alpha = 1; alpha falls towards 0 as n grows); n < 0, +inf or NaN gives NaN
+/// (crate docs, "Bad input", rule 5). Within 1 ULP.
 #[inline]
 #[must_use]
 pub fn alpha_from_blinn_phong<T: Real>(exponent: T) -> T {
     crate::domain::nan_unless(
-        exponent.simd_ge(T::ZERO),
+        exponent.simd_ge(T::ZERO) & exponent.simd_lt(T::INFINITY),
         (T::TWO / (exponent + T::TWO)).sqrt(),
     )
 }

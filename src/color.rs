@@ -3,7 +3,7 @@
 //! RGB travels as [`V3`] (x = red, y = green, z = blue), linear Rec.709 / sRGB primaries unless
 //! a function says otherwise.
 
-use crate::domain::nan_unless;
+use crate::domain::{finite_or_nan, nan_unless};
 use crate::real::Real;
 use crate::vec3::V3;
 
@@ -65,13 +65,14 @@ pub fn mul<T: Real>(m: &Mat3, c: V3<T>) -> V3<T> {
 /// and every 8- and 16-bit code round-trips exactly (`cargo test --test tonemap color_transfer:: --
 /// --nocapture`). [`srgb_oetf_fast`] is the plain single-`pow` form in the input's own precision.
 ///
-/// Domain: every value. Negative input (and -inf) is clamped to 0 (a documented input clamp:
-/// so one slightly negative pixel from a filter encodes as black); NaN gives NaN. Above 1 the
-/// power curve continues (clamp before quantizing); +inf gives +inf.
+/// Domain: every finite value. Negative input is clamped to 0 (a documented input clamp: so
+/// one slightly negative pixel from a filter encodes as black); NaN and +-inf give NaN (crate
+/// docs, "Bad input", rule 5: an infinite radiance is an overflow upstream). Above 1 the
+/// power curve continues (clamp before quantizing).
 #[inline]
 #[must_use]
 pub fn srgb_oetf<T: Real>(x: T) -> T {
-    non_negative(x).map_f64(srgb_oetf_f64)
+    display_input(x).map_f64(srgb_oetf_f64)
 }
 
 /// [`srgb_oetf`] in the input's own precision without the refinement: one `pow`, the same
@@ -81,11 +82,12 @@ pub fn srgb_oetf<T: Real>(x: T) -> T {
 /// the exponent 1/2.4 and of 1.055 x^(1/2.4) - 0.055; f32: 3.08 ulps over every input,
 /// `oracle/tests/exhaustive_f32.rs`). Above 1 the exponent's rounding is multiplied by ln x:
 /// up to 16.6 ulps in f32 (at 1.7e38, same sweep; about 3.5 at 1e9) and, by the same
-/// estimate, about 120 in f64 near its largest value. Negative input gives 0, NaN gives NaN.
+/// estimate, about 120 in f64 near its largest value. Negative input gives 0, NaN and +-inf
+/// give NaN.
 #[inline]
 #[must_use]
 pub fn srgb_oetf_fast<T: Real>(x: T) -> T {
-    let x = non_negative(x);
+    let x = display_input(x);
     let lin = x * T::splat(12.92);
     let pow = T::splat(1.055).mul_add(x.pow(T::splat(1.0 / 2.4)), T::splat(-0.055));
     T::select(x.simd_le(T::splat(SRGB_OETF_BREAK)), lin, pow)
@@ -115,13 +117,13 @@ pub const SRGB_EOTF_BREAK: f64 = 0.040_45;
 /// [`srgb_oetf`]): within 1 ulp in f32 and f32x8; within 2.5 ulps in f64 and f64x4 (the MPFR
 /// oracle's deep search: max 2.27; libm's `pow`).
 ///
-/// Domain: every value. Negative input is clamped to 0, NaN gives NaN; above 1 the curve
-/// continues, and results beyond the type's range (f32 inputs above about 1e16, f64 above
-/// 1e128) are capped at MAX; +inf gives +inf.
+/// Domain: every finite value. Negative input is clamped to 0, NaN and +-inf give NaN (rule
+/// 5); above 1 the curve continues, and results beyond the type's range (f32 inputs above
+/// about 1e16, f64 above 1e128) are capped at MAX.
 #[inline]
 #[must_use]
 pub fn srgb_eotf<T: Real>(x: T) -> T {
-    cap_finite(x, non_negative(x).map_f64(srgb_eotf_f64))
+    cap_finite(x, display_input(x).map_f64(srgb_eotf_f64))
 }
 
 /// `y` with values above MAX lowered to MAX where the input `x` is finite (a power of a
@@ -163,7 +165,8 @@ fn srgb_eotf_f64(x: f64) -> f64 {
         return x / 12.92;
     }
     let p = srgb_eotf_pow_f64(x);
-    // +inf in, +inf out (the first-order correction would form inf * 0).
+    // A power that overflows (x above about 1e128) stays +inf, capped by the caller (the
+    // first-order correction would form inf * 0).
     if p.is_finite() { p } else { libm::pow(x, 2.4) }
 }
 
@@ -195,12 +198,12 @@ pub const REC709_BREAK: f64 = 0.018;
 /// `docs/accuracy.md`): within 0.7 ulp in f32 and f32x8, 3.7 ulps in f64 and f64x4, max 3.48
 /// found (the 1.099 L^0.45 - 0.099 subtraction loses up to 1.2 bits near the breakpoint).
 ///
-/// Domain: every value. Negative input is clamped to 0, NaN gives NaN; above 1 the power
-/// curve continues; +inf gives +inf.
+/// Domain: every finite value. Negative input is clamped to 0, NaN and +-inf give NaN (rule
+/// 5); above 1 the power curve continues.
 #[inline]
 #[must_use]
 pub fn rec709_oetf<T: Real>(l: T) -> T {
-    non_negative(l).map_f64(rec709_oetf_f64)
+    display_input(l).map_f64(rec709_oetf_f64)
 }
 
 fn rec709_oetf_f64(l: f64) -> f64 {
@@ -211,15 +214,15 @@ fn rec709_oetf_f64(l: f64) -> f64 {
 }
 
 /// Plain gamma encoding x^(1 / gamma) (the classic display gamma correction; 2.2 approximates
-/// sRGB). Domain: gamma in (0, MAX] (gamma <= 0, +inf and NaN give NaN); x any value,
-/// negative clamped to 0, NaN gives NaN; results that overflow for finite x (gamma < 1,
+/// sRGB). Domain: gamma in (0, MAX] (gamma <= 0, +inf and NaN give NaN); x any finite value,
+/// negative clamped to 0, NaN and +-inf give NaN (rule 5); results that overflow for finite x (gamma < 1,
 /// x > 1) are capped at MAX. The exponent 1 / gamma is rounded once, which costs up to
 /// |ln x| / gamma * 0.5 ulp on top of `pow`'s ulp (f32 x = 1e-30 with gamma 2.2: 16 ulps).
 #[inline]
 #[must_use]
 pub fn gamma_encode<T: Real>(x: T, gamma: T) -> T {
     let ok = gamma.simd_gt(T::ZERO) & gamma.simd_le(T::MAX);
-    nan_unless(ok, cap_finite(x, non_negative(x).pow(gamma.recip())))
+    nan_unless(ok, cap_finite(x, display_input(x).pow(gamma.recip())))
 }
 
 /// Plain gamma decoding x^gamma, the inverse of [`gamma_encode`]: within `pow`'s 1 ulp.
@@ -228,7 +231,7 @@ pub fn gamma_encode<T: Real>(x: T, gamma: T) -> T {
 #[must_use]
 pub fn gamma_decode<T: Real>(x: T, gamma: T) -> T {
     let ok = gamma.simd_gt(T::ZERO) & gamma.simd_le(T::MAX);
-    nan_unless(ok, cap_finite(x, non_negative(x).pow(gamma)))
+    nan_unless(ok, cap_finite(x, display_input(x).pow(gamma)))
 }
 
 /// `max(x, 0)` with NaN kept: the input clamp of every display function (a negative value is
@@ -236,6 +239,14 @@ pub fn gamma_decode<T: Real>(x: T, gamma: T) -> T {
 #[inline]
 pub(crate) fn non_negative<T: Real>(x: T) -> T {
     T::select(x.simd_lt(T::ZERO), T::ZERO, x)
+}
+
+/// The input clamp of the transfer functions: [`non_negative`], with +-inf sent to NaN (crate
+/// docs, "Bad input", rule 5) where the tonemap operators' own clamp ([`non_negative`] and
+/// `MAX_INPUT`) keeps them as documented ends.
+#[inline]
+fn display_input<T: Real>(x: T) -> T {
+    non_negative(finite_or_nan(x))
 }
 
 /// [`srgb_oetf`] per channel.

@@ -26,16 +26,19 @@ use crate::microfacet::Microfacet;
 use crate::real::Real;
 use crate::shading::Cosines;
 use crate::vec3::V3;
-use crate::vec3::any_nan3;
+use crate::vec3::any_nonfinite3;
 
 /// The half vector h = normalize(wo + wi) and v.h, with the guard for wo = -wi (h undefined):
 /// h falls back to the normal there, which only happens below the horizon, where `eval`
-/// returns 0 anyway.
+/// returns 0 anyway. A NaN or infinite component of wo or wi gives NaN in h and v.h (crate
+/// docs, "Bad input", rules 1 and 5; an infinite sum would normalize to the fallback).
 #[inline]
 #[must_use]
 pub fn half_vector<T: Real>(wo: V3<T>, wi: V3<T>) -> (V3<T>, T) {
+    let bad = any_nonfinite3(wo) | any_nonfinite3(wi);
     let h = (wo + wi).normalize_or(V3::unit_z());
-    (h, wo.dot(h).saturate())
+    let h = V3::select(bad, V3::splat(T::splat(f64::NAN)), h);
+    (h, nan_where(bad, wo.dot(h).saturate()))
 }
 
 /// The two cosines of the half vector, n.h and v.h, from unit directions wo and wi, without
@@ -51,7 +54,7 @@ pub fn half_vector<T: Real>(wo: V3<T>, wi: V3<T>) -> (V3<T>, T) {
 /// carries wo's length error (its rounding) divided by 1 + wo.wi. Domain: unit vectors.
 /// v.h is clamped to 1; where wo = -wi exactly (h undefined) the result is n.h = 1 (as
 /// [`half_vector`] falls back to the normal) and v.h = 0 (where [`half_vector`] gives wo.z);
-/// NaN in any component gives NaN in both. Within 3 ULP of the same formulas evaluated in
+/// a NaN or infinite component gives NaN in both. Within 3 ULP of the same formulas evaluated in
 /// f64 from the same f32 directions; within 8 ULP of [`half_vector`]'s cosines where
 /// 1 + wo.wi > 0.3, while closer to opposite directions [`half_vector`]'s own error takes
 /// over (`cargo test --test cook_torrance rgb::half_cosines -- --nocapture`).
@@ -61,11 +64,15 @@ pub fn half_cosines<T: Real>(wo: V3<T>, wi: V3<T>) -> (T, T) {
     let s = wo + wi;
     let len = s.length();
     let n_dot_h = T::select(len.simd_eq(T::ZERO), T::ONE, s.z / len);
-    (n_dot_h, (T::HALF * len).min(T::ONE))
+    let bad = any_nonfinite3(wo) | any_nonfinite3(wi);
+    (
+        nan_where(bad, n_dot_h),
+        nan_where(bad, (T::HALF * len).min(T::ONE)),
+    )
 }
 
 /// D(h) V(wo, wi) capped at MAX (0 where either direction is at or below the horizon, NaN
-/// where any component is NaN) and v.h: the part of the BRDF every Fresnel form multiplies.
+/// where any component is NaN or infinite) and v.h: the part of the BRDF every Fresnel form multiplies.
 ///
 /// Why the cap: V is itself capped at MAX where both cosines are tiny, and D > 1 would then
 /// overflow the product to inf (and inf times a zero Fresnel to NaN).
@@ -74,7 +81,10 @@ fn masked_dv<T: Real, M: Microfacet<T> + ?Sized>(m: &M, wo: V3<T>, wi: V3<T>) ->
     let (h, v_dot_h) = half_vector(wo, wi);
     let dv = (m.d(h) * m.v_correlated(wo, wi)).min(T::MAX);
     let dv = above_horizon(wo.z, wi.z, dv);
-    (nan_where(any_nan3(wo) | any_nan3(wi), dv), v_dot_h)
+    (
+        nan_where(any_nonfinite3(wo) | any_nonfinite3(wi), dv),
+        v_dot_h,
+    )
 }
 
 /// f = D(h) V(wo, wi) F, with F given by the caller as a function of v.h (any Fresnel form of
@@ -137,8 +147,8 @@ pub fn eval_rgb<T: Real, M: Microfacet<T> + ?Sized>(
 /// given, so its v.h only passes a NaN on (the F the caller formed from it).
 ///
 /// Domain: cosines in [-1, 1] (clamped to [0, 1]; 0 where n.l <= 0 or n.v <= 0), alpha in
-/// [0, +inf) finite (clamped to [ALPHA_MIN, ALPHA_MAX]), F >= 0. NaN for NaN in any input,
-/// alpha < 0 or +inf, F < 0. Never inf: D V and D V F are capped at the largest finite value
+/// [0, +inf) finite (clamped to [ALPHA_MIN, ALPHA_MAX]), F >= 0 finite. NaN for NaN in any
+/// input, alpha < 0 or +inf, F < 0 or +inf. Never inf: D V and D V F are capped at the largest finite value
 /// (reached only when both cosines are near 0, where the BRDF is multiplied by n.l anyway).
 #[cfg(feature = "ggx")]
 #[inline]
@@ -157,14 +167,17 @@ fn ggx_dv<T: Real>(c: Cosines<T>, alpha: T) -> T {
 }
 
 /// (D V capped at MAX) F capped at MAX, 0 below the horizon, NaN for NaN input, alpha outside
-/// [0, +inf) or F < 0: the shared tail of the dot-product entry points. Capping D V before the
+/// [0, +inf) or F outside [0, +inf): the shared tail of the dot-product entry points. Capping D V before the
 /// multiplication by F keeps a zero F from meeting an infinite D V (0 inf = NaN).
 #[cfg(any(feature = "ggx", feature = "beckmann"))]
 #[inline]
 fn assemble<T: Real>(dv: T, c: Cosines<T>, alpha: T, fresnel: T) -> T {
     let value = (dv.min(T::MAX) * fresnel).min(T::MAX);
     let value = above_horizon(c.n_dot_v, c.n_dot_l, value);
-    let ok = crate::microfacet::alpha_ok(alpha) & fresnel.simd_ge(T::ZERO);
+    // F = +inf is out of the domain (rule 5), not a cap at MAX.
+    let ok = crate::microfacet::alpha_ok(alpha)
+        & fresnel.simd_ge(T::ZERO)
+        & fresnel.simd_lt(T::INFINITY);
     crate::domain::nan_unless(
         ok,
         nan_where(c.n_dot_h.is_nan() | c.v_dot_h.is_nan(), value),

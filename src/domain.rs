@@ -67,3 +67,39 @@ pub(crate) fn above<T: Real>(c: T, value: T) -> T {
 pub(crate) fn nan_where<T: Real>(bad: T::Mask, value: T) -> T {
     T::select(bad, T::splat(f64::NAN), value)
 }
+
+/// `value` where `x` is finite; NaN where `x` is infinite or NaN. Rule 5 of the crate docs:
+/// every documented domain ends at the largest finite float, so an infinite direction
+/// component, parameter, colour, angle or distance is out of every domain (a clamped cosine
+/// or sample is clamped instead, before any arithmetic could turn its infinity into NaN).
+#[inline]
+#[must_use]
+pub(crate) fn nan_unless_finite<T: Real>(x: T, value: T) -> T {
+    nan_unless(x.is_finite(), value)
+}
+
+/// `x` where it is finite, NaN elsewhere (the one-input form of [`nan_unless_finite`]).
+#[inline]
+#[must_use]
+pub(crate) fn finite_or_nan<T: Real>(x: T) -> T {
+    nan_unless_finite(x, x)
+}
+
+/// `value`, or NaN where a component of `wo` or `wi` is NaN or infinite: the guard of every
+/// kernel that takes two directions, whatever components it reads (rules 1 and 5).
+#[inline]
+#[must_use]
+pub(crate) fn finite_dirs<T: Real>(wo: crate::vec3::V3<T>, wi: crate::vec3::V3<T>, value: T) -> T {
+    use crate::vec3::any_nonfinite3;
+    nan_where(any_nonfinite3(wo) | any_nonfinite3(wi), value)
+}
+
+/// A clamped input (a cosine, a uniform sample) with +inf replaced by 1 and -inf by -1, so that
+/// a kernel gives at an infinity bit for bit its value at +-1 (rules 3 and 5). Finite values
+/// and NaN pass unchanged: one compare and one select, and no finite result moves. Apply it
+/// before any arithmetic that would turn the infinity into NaN (inf - inf, 0 * inf, inf / inf).
+#[inline]
+#[must_use]
+pub(crate) fn unit_if_inf<T: Real>(c: T) -> T {
+    T::select(c.abs().simd_eq(T::INFINITY), T::ONE.copysign(c), c)
+}

@@ -20,6 +20,7 @@
 //! assert!((back - Vec3::Z).length() < 1e-6);
 //! ```
 
+use crate::domain::{finite_or_nan, nan_unless};
 use crate::real::Real;
 use crate::vec3::V3;
 
@@ -43,7 +44,7 @@ impl<T: Real> Frame<T> {
     /// Branch-free and continuous except across the plane n.z = 0, where it stays
     /// orthonormal to rounding (the Frisvad 2012 construction it improves on loses
     /// orthogonality near n = (0, 0, -1)). Domain: unit `n`; the error of the basis grows with
-    /// `| |n| - 1 |`. A NaN component of `n` gives a frame of NaN axes.
+    /// `| |n| - 1 |`. A NaN or infinite component of `n` gives a frame of NaN axes.
     ///
     /// Source: Duff, Burgess, Christensen, Hery, Kensler, Liani, Villemin 2017, "Building an
     /// Orthonormal Basis, Revisited", JCGT 6(1).
@@ -57,7 +58,7 @@ impl<T: Real> Frame<T> {
         let b = V3::new(c, s + n.y * n.y * a, -n.y);
         // Some axes skip a component (b.z = -n.y whatever n.x is; copysign turns a NaN n.z into
         // a sign): a NaN anywhere in n gives an all-NaN frame, never a plausible axis.
-        let bad = crate::vec3::any_nan3(n);
+        let bad = crate::vec3::any_nonfinite3(n);
         let nan = |v: V3<T>| V3::select(bad, V3::splat(T::splat(f64::NAN)), v);
         Self {
             t: nan(t),
@@ -89,35 +90,41 @@ impl<T: Real> Frame<T> {
     }
 }
 
-/// cos(theta) of a local direction: `w.z`. Negative below the surface.
+/// cos(theta) of a local direction: `w.z`. Negative below the surface; NaN for a NaN or
+/// infinite `w.z` (crate docs, "Bad input", rule 5).
 #[inline]
 #[must_use]
 pub fn cos_theta<T: Real>(w: V3<T>) -> T {
-    w.z
+    finite_or_nan(w.z)
 }
 
-/// cos^2(theta) of a local direction: `w.z^2`.
+/// cos^2(theta) of a local direction: `w.z^2`; NaN for a NaN or infinite `w.z`.
 #[inline]
 #[must_use]
 pub fn cos2_theta<T: Real>(w: V3<T>) -> T {
-    w.z * w.z
+    let z = finite_or_nan(w.z);
+    z * z
 }
 
-/// |cos(theta)| of a local direction.
+/// |cos(theta)| of a local direction; NaN for a NaN or infinite `w.z`.
 #[inline]
 #[must_use]
 pub fn abs_cos_theta<T: Real>(w: V3<T>) -> T {
-    w.z.abs()
+    finite_or_nan(w.z).abs()
 }
 
-/// sin^2(theta) of a unit local direction, computed as `w.x^2 + w.y^2`.
+/// sin^2(theta) of a unit local direction, computed as `w.x^2 + w.y^2`; NaN for a NaN or
+/// infinite `w.x` or `w.y` (so also [`sin_theta`], [`tan2_theta`], [`cos_phi`], [`sin_phi`]).
 ///
 /// Not `1 - cos^2(theta)`: near the pole that subtraction cancels (for cos = 1 - 1e-7 in f32
 /// it returns 0 or 2.4e-7 instead of 2e-7), and every grazing-free lobe evaluates there.
 #[inline]
 #[must_use]
 pub fn sin2_theta<T: Real>(w: V3<T>) -> T {
-    w.x.mul_add(w.x, w.y * w.y)
+    nan_unless(
+        w.x.is_finite() & w.y.is_finite(),
+        w.x.mul_add(w.x, w.y * w.y),
+    )
 }
 
 /// sin(theta) of a unit local direction, `sqrt(w.x^2 + w.y^2)`.

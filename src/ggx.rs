@@ -67,13 +67,13 @@
 //!
 //! [`alpha_from_perceptual`]: crate::microfacet::alpha_from_perceptual
 
-use crate::domain::{above, nan_unless, nan_where};
+use crate::domain::{above, nan_unless, nan_where, unit_if_inf};
 use crate::dw::{Dw, Rel, two_prod, two_sum};
 use crate::error::ParamError;
 use crate::microfacet::{Microfacet, clamp_alpha, validate_alphas};
 use crate::real::Real;
 use crate::vec3::V3;
-use crate::vec3::any_nan3;
+use crate::vec3::any_nonfinite3;
 
 /// sin^2 = (1 - c)(1 + c) for c in [0, 1] to twice the working precision: both factors
 /// exact by [`two_sum`], their product by [`Dw::mul`].
@@ -215,6 +215,8 @@ impl<T: Real> Ggx<T> {
     /// separable G2 multiplies two of them.
     #[inline]
     fn g1_dw(&self, w: V3<T>) -> Rel<T> {
+        // A zero vector takes the horizon's G1, 0, instead of 0 / 0.
+        let w = crate::vec3::horizon_if_zero3(w);
         let (ax, ay) = self.clamped_alphas();
         let c = Rel::exact(w.z.abs());
         let px = Rel::exact(ax).mul(Rel::exact(w.x));
@@ -235,6 +237,8 @@ impl<T: Real> Ggx<T> {
     /// the working precision (Dekker's exact products).
     #[inline]
     fn smith_dw(&self, w: V3<T>) -> (T, Dw<T>, Dw<T>) {
+        // A zero vector takes the horizon's values (the capped Lambda pole) instead of 0 / 0.
+        let w = crate::vec3::horizon_if_zero3(w);
         let (ax, ay) = self.clamped_alphas();
         let c = w.z.abs();
         let q = Dw::product(ax, w.x).sq().add(Dw::product(ay, w.y).sq());
@@ -263,7 +267,7 @@ impl<T: Real> Microfacet<T> for Ggx<T> {
         // non-unit m.
         let d = Rel::exact(T::ONE).div(den).value().min(T::MAX);
         let value = above(m.z, d);
-        nan_where(any_nan3(m) | ax.is_nan() | ay.is_nan(), value)
+        nan_where(any_nonfinite3(m) | ax.is_nan() | ay.is_nan(), value)
     }
 
     /// Lambda(w) = (sqrt(1 + alpha^2 tan^2) - 1) / 2 (Heitz 2014 eq. 86), evaluated as
@@ -284,13 +288,15 @@ impl<T: Real> Microfacet<T> for Ggx<T> {
     /// component.
     #[inline]
     fn g1(&self, w: V3<T>) -> T {
-        self.g1_dw(w).value()
+        // An infinite component would round the quotient to a plausible 0 (rule 5).
+        nan_where(any_nonfinite3(w), self.g1_dw(w).value())
     }
 
     /// G1(wo) G1(wi), the product formed before the one rounding (see [`Ggx::g1`]).
     #[inline]
     fn g2_separable(&self, wo: V3<T>, wi: V3<T>) -> T {
-        self.g1_dw(wo).mul(self.g1_dw(wi)).value()
+        let g2 = self.g1_dw(wo).mul(self.g1_dw(wi)).value();
+        nan_where(any_nonfinite3(wo) | any_nonfinite3(wi), g2)
     }
 
     /// G2 = 1 / (1 + Lambda(wo) + Lambda(wi)) (Heitz 2014 eq. 99), evaluated as
@@ -309,7 +315,10 @@ impl<T: Real> Microfacet<T> for Ggx<T> {
         let ok = den.hi.simd_gt(T::ZERO);
         let g2 = quot(num, Dw::select(ok, den, Dw::exact(T::ONE))) * inv_sc;
         let g2 = T::select(ok, g2.min(T::ONE), T::ZERO);
-        nan_where(any_nan3(wo) | any_nan3(wi) | den.hi.is_nan(), g2)
+        nan_where(
+            any_nonfinite3(wo) | any_nonfinite3(wi) | den.hi.is_nan(),
+            g2,
+        )
     }
 
     /// V = G2 / (4 |o.z| |i.z|) = 0.5 / (|i.z| s_o + |o.z| s_i) with s = sqrt(z^2 + q)
@@ -321,7 +330,7 @@ impl<T: Real> Microfacet<T> for Ggx<T> {
         let (ci, _, si) = self.smith_dw(wi);
         let den = correlated_den(co, so, ci, si);
         nan_where(
-            any_nan3(wo) | any_nan3(wi) | den.hi.is_nan(),
+            any_nonfinite3(wo) | any_nonfinite3(wi) | den.hi.is_nan(),
             v_from_den(den),
         )
     }
@@ -329,9 +338,14 @@ impl<T: Real> Microfacet<T> for Ggx<T> {
     /// |z| Lambda = q / (2 (sqrt(z^2 + q) + |z|)): alpha sin(theta) / 2 at the horizon.
     #[inline]
     fn cos_lambda(&self, w: V3<T>) -> T {
+        // A zero vector takes the horizon's value instead of 0 / 0.
+        let w = crate::vec3::horizon_if_zero3(w);
         let c = w.z.abs();
         let q = self.projected_roughness2(w);
-        q / (T::TWO * (c.mul_add(c, q).sqrt() + c))
+        nan_where(
+            any_nonfinite3(w),
+            q / (T::TWO * (c.mul_add(c, q).sqrt() + c)),
+        )
     }
 }
 
@@ -403,10 +417,17 @@ pub fn d_fast<T: Real>(n_dot_h: T, alpha: T) -> T {
 /// eq. 85; Burley 2012). `t_dot_h`, `b_dot_h`: the half vector against tangent and bitangent;
 /// `alpha_x`, `alpha_y`: the widths along them, each an alpha as in [`d`] (not perceptual
 /// roughness). Domain: components of a unit vector; alphas as [`d`]; NaN for NaN in any input.
+/// The three are cosines: +-inf counts as +-1 (crate docs, "Bad input", rules 3 and 5).
 #[inline]
 #[must_use]
 pub fn d_aniso<T: Real>(n_dot_h: T, t_dot_h: T, b_dot_h: T, alpha_x: T, alpha_y: T) -> T {
-    Ggx::new_unchecked(alpha_x, alpha_y).d(V3::new(t_dot_h, b_dot_h, n_dot_h))
+    // As cosines, before `Ggx::d` reads them as a direction (where an infinity is NaN).
+    let m = V3::new(
+        unit_if_inf(t_dot_h),
+        unit_if_inf(b_dot_h),
+        unit_if_inf(n_dot_h),
+    );
+    Ggx::new_unchecked(alpha_x, alpha_y).d(m)
 }
 
 /// Smith Lambda of the isotropic GGX for a direction at cosine `n_dot_v`:

@@ -79,6 +79,15 @@
 //! (about 230 KB). Refinement stops when the error meets the tolerance, when the evaluation
 //! budget is spent, or when the array is full; the returned [`Estimate::error`] says how well
 //! it went in every case.
+//!
+//! # Bad input
+//! The integrators keep the crate's rule for bad input (crate docs, "Bad input") for every
+//! argument, their [`Config`] included: a direction (`wo`, a `peaks` entry) with a NaN or
+//! infinite component, or a tolerance that is NaN or negative, gives [`Estimate::NAN`] (value
+//! and error NaN, no evaluation) instead of a plausible estimate of some other integral. A
+//! tolerance of +inf is meaningful (stop after the initial partition) and 0 refines until
+//! the budget is spent. What the integrand returns is summed as it is: a NaN from `f` makes
+//! the value NaN.
 
 use glam::{DVec3, Vec3};
 
@@ -98,7 +107,19 @@ pub struct Estimate {
     pub evaluations: u64,
 }
 
-/// Stopping rule of the adaptive integrators.
+impl Estimate {
+    /// The estimate of bad input (module docs, "Bad input"): value and error NaN, no
+    /// evaluation spent.
+    pub const NAN: Self = Self {
+        value: f64::NAN,
+        error: f64::NAN,
+        evaluations: 0,
+    };
+}
+
+/// Stopping rule of the adaptive integrators. Both tolerances must be >= 0 (+inf allowed:
+/// stop after the initial partition); a NaN or negative one makes every integrator return
+/// [`Estimate::NAN`].
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Config {
     /// Stop once `error <= abs_tol`...
@@ -121,6 +142,18 @@ impl Default for Config {
             max_evals: 2_000_000,
         }
     }
+}
+
+impl Config {
+    /// True where both tolerances are >= 0 (false for NaN).
+    fn is_valid(&self) -> bool {
+        self.abs_tol >= 0.0 && self.rel_tol >= 0.0
+    }
+}
+
+/// True where every component of `w` is finite (false for NaN and +-inf).
+fn finite_dir(w: DVec3) -> bool {
+    w.x.is_finite() && w.y.is_finite() && w.z.is_finite()
 }
 
 /// Genz-Malik abscissae for two dimensions (fractions of the half-width).
@@ -304,9 +337,17 @@ impl Breaks {
 ///
 /// Accuracy (tests/integrate/accuracy.rs): 1e-5 absolute or better on smooth integrands and
 /// 1e-3 relative on lobes as narrow as alpha = 0.01 or cos^10000, with [`Config::default`].
+///
+/// Bad input: a peak with a NaN or infinite component (among the first [`MAX_PEAKS`]) or an
+/// invalid `cfg` (a NaN or negative tolerance) gives [`Estimate::NAN`] without calling `f`.
 #[must_use]
 pub fn hemisphere(mut f: impl FnMut(DVec3) -> f64, peaks: &[DVec3], cfg: &Config) -> Estimate {
     use core::f64::consts::{FRAC_PI_2, PI, TAU};
+    // Without these, a NaN tolerance stops refinement at once (every comparison is false) and
+    // a NaN peak poisons the partition, both with a plausible finite estimate.
+    if !cfg.is_valid() || !peaks.iter().take(MAX_PEAKS).all(|&p| finite_dir(p)) {
+        return Estimate::NAN;
+    }
     let mut thetas = Breaks::new(0.0, FRAC_PI_2);
     let mut phis = Breaks::new(0.0, TAU);
     thetas.graded_around(0.0, 1.0, 0.0, FRAC_PI_2);
@@ -424,19 +465,25 @@ fn mirror(wo: DVec3) -> DVec3 {
 ///
 /// `f(wo, wi)` is the BRDF with both directions pointing away from the surface. A physical
 /// BRDF has rho(wo) <= 1 for every wo (white furnace); a Lambertian surface of albedo a has
-/// rho = a. The normal and the mirror direction of `wo` are treated as peaks.
+/// rho = a. The normal and the mirror direction of `wo` are treated as peaks. A NaN or
+/// infinite component of `wo` gives [`Estimate::NAN`] (module docs, "Bad input").
 #[must_use]
 pub fn directional_albedo(wo: DVec3, f: impl FnMut(DVec3, DVec3) -> f64) -> Estimate {
     directional_albedo_with(wo, f, &Config::default())
 }
 
-/// [`directional_albedo`] with an explicit [`Config`].
+/// [`directional_albedo`] with an explicit [`Config`]; an invalid `cfg` or a non-finite `wo`
+/// gives [`Estimate::NAN`].
 #[must_use]
 pub fn directional_albedo_with(
     wo: DVec3,
     mut f: impl FnMut(DVec3, DVec3) -> f64,
     cfg: &Config,
 ) -> Estimate {
+    // `f` may ignore wo (a Lambertian lobe): a NaN view must still give NaN.
+    if !finite_dir(wo) {
+        return Estimate::NAN;
+    }
     hemisphere(|wi| f(wo, wi) * wi.z, &[mirror(wo)], cfg)
 }
 
@@ -493,7 +540,9 @@ pub fn ndf_projected_area_f32(mut d: impl FnMut(Vec3) -> f32) -> Estimate {
 /// is 1 for every wo when G1 is the Smith masking function of D (Heitz 2014, "Understanding the
 /// Masking-Shadowing Function in Microfacet-Based BRDFs", eq. 18 and section 5).
 ///
-/// `wo` must have `wo.z > 0`; for `wo.z <= 0` the result is NaN (the integral is undefined).
+/// `wo` must have `wo.z > 0`; for `wo.z <= 0` the result is [`Estimate::NAN`] (the integral
+/// is undefined), and so it is for a NaN or infinite component of `wo` (module docs, "Bad
+/// input"; the tangent components set the kink, so a NaN there is not a plausible 1).
 /// The normal and `wo` itself are treated as peaks (for grazing `wo` the visible normals
 /// concentrate towards it).
 ///
@@ -510,12 +559,8 @@ pub fn smith_weak_furnace(
     mut d: impl FnMut(DVec3) -> f64,
     mut g1: impl FnMut(DVec3, DVec3) -> f64,
 ) -> Estimate {
-    if wo.z <= 0.0 || wo.z.is_nan() {
-        return Estimate {
-            value: f64::NAN,
-            error: f64::NAN,
-            evaluations: 0,
-        };
+    if wo.z <= 0.0 || !finite_dir(wo) {
+        return Estimate::NAN;
     }
     let e = hemisphere(
         |m| {

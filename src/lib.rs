@@ -95,6 +95,23 @@
 //!    (`microfacet::ALPHA_MIN` and `ALPHA_MAX`), poles (Lambda at the horizon) and products
 //!    that would overflow are capped at the largest finite value. The domain a doc states is
 //!    the domain the tests sweep, up to the largest finite float.
+//! 5. **Infinities.** Every documented domain ends at the largest finite float, so an infinity
+//!    is never in-domain input. An infinite *cosine or uniform sample* is clamped like any
+//!    other out-of-range one (rule 3): +inf counts as 1 and -inf as -1 (a sample: as its
+//!    clamped ends), so the result equals the result at +-1 bit for bit. The tonemap
+//!    operators' inputs are clamped the same way by their own documented clamp
+//!    (`tonemap::sanitize`: -inf counts as 0, +inf as `tonemap::MAX_INPUT`). *Every other
+//!    infinite input* (a direction or normal component, a parameter, a colour or radiance, an
+//!    angle, a distance, a pdf) gives NaN in every output that a NaN in that input would
+//!    reach: a direction (inf, 0, 1) has no one meaning, and an infinite radiance is an
+//!    overflow upstream that a reference must surface. Samplers return a NaN direction and a
+//!    NaN pdf; the integrators return a NaN estimate and error (`integrate`, "Bad input").
+//!    Exempt: the vector-arithmetic helpers of [`V3`] (`dot`, `cross`, `length`,
+//!    `length_squared`, `normalize_or`, `min_element`, `max_element`, `mirror`, the operators),
+//!    `Frame::to_local` and `Frame::to_world` (for the vector they transform), and the linear
+//!    colour helpers `color::mul` and `color::luminance`: they follow IEEE arithmetic like the
+//!    operators they are. A zero-length finite direction is finite input: it gives finite
+//!    output, and every sampler and pdf returns pdf 0 for it.
 //!
 //! ## Accuracy
 //! The exact functions (NDFs, Smith terms, Fresnel, the transfer functions, the tonemapping

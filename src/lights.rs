@@ -26,11 +26,14 @@
 //!
 //! # Bad input
 //! Kernels validate nothing and never panic. A NaN input gives NaN. A parameter outside its
-//! documented domain gives NaN. The documented edges (distance 0 and +inf, radius 0 and +inf)
-//! give the values stated on each function, never NaN. [`Attenuation`] and [`SpotCone`]
-//! validate their parameters once, at construction.
+//! documented domain gives NaN. The documented edges (distance 0, radius 0) give the values
+//! stated on each function, never NaN. Every domain ends at the largest finite float (crate
+//! docs, "Bad input", rule 5): an infinite distance, radius, BRDF value, irradiance or light
+//! colour gives NaN (an infinite radiance is an overflow upstream, which a reference must
+//! surface); an infinite cosine counts as +-1. A light with no window is one of radius
+//! `T::MAX`. [`Attenuation`] and [`SpotCone`] validate their parameters once, at construction.
 
-use crate::domain::nan_unless;
+use crate::domain::{nan_unless, unit_if_inf};
 use crate::error::{ParamError, require};
 use crate::real::Real;
 use crate::vec3::V3;
@@ -47,7 +50,8 @@ fn nan_of<T: Real>(x: T) -> T {
 /// a surface facing the light (for a point light, I / d^2 times an attenuation window).
 ///
 /// Domain: f >= 0 and e_perp >= 0, both finite; n.l in [-1, 1]. n.l <= 0 (light behind the
-/// surface) gives 0; NaN in any input, or an input outside its domain, gives NaN. A product
+/// surface) gives 0; NaN in any input, or an input outside its domain (f or e_perp infinite
+/// included), gives NaN; n.l = +-inf counts as +-1 (rules 3 and 5). A product
 /// too large for the float type is capped at the largest finite value instead of +inf.
 ///
 /// Source: the reflectance equation with a delta light (Pharr, Jakob, Humphreys, "Physically
@@ -64,6 +68,8 @@ pub fn radiance<T: Real>(f: T, e_perp: T, n_dot_l: T) -> T {
 /// product).
 #[inline]
 fn reflected<T: Real>(f: T, e_perp: T, n_dot_l: T, k: T) -> T {
+    // An infinite cosine counts as +-1 before the range check below rejects it.
+    let n_dot_l = unit_if_inf(n_dot_l);
     let finite_non_negative = |x: T| x.simd_ge(T::ZERO) & x.is_finite();
     let ok = finite_non_negative(f)
         & finite_non_negative(e_perp)
@@ -114,8 +120,9 @@ pub fn irradiance<T: Real>(e_perp: T, n_dot_l: T) -> T {
 /// A punctual light has no size, so 1/d^2 grows without bound as d -> 0; clamping the distance
 /// at the size of a real bulb (Lagarde and de Rousiers use 1 cm) keeps it finite.
 ///
-/// Domain: d >= 0 (+inf allowed), d_min > 0 finite (NaN otherwise). Edges: d = 0 gives
-/// 1 / d_min^2; d = +inf gives 0. Where d_min^2 underflows (d_min below about 1e-19 in f32)
+/// Domain: d >= 0 finite, d_min > 0 finite (NaN otherwise, d = +inf included: an infinite
+/// distance is an overflow upstream). Edges: d = 0 gives 1 / d_min^2; d = `T::MAX` gives 0.
+/// Where d_min^2 underflows (d_min below about 1e-19 in f32)
 /// the result is capped at the largest finite value instead of +inf.
 ///
 /// Source: Lagarde and de Rousiers 2014, "Moving Frostbite to Physically Based Rendering 3.0",
@@ -123,23 +130,29 @@ pub fn irradiance<T: Real>(e_perp: T, n_dot_l: T) -> T {
 #[inline]
 #[must_use]
 pub fn inverse_square<T: Real>(distance: T, min_distance: T) -> T {
-    let ok = distance.simd_ge(T::ZERO) & min_distance.simd_gt(T::ZERO) & min_distance.is_finite();
+    let ok = distance.simd_ge(T::ZERO)
+        & distance.is_finite()
+        & min_distance.simd_gt(T::ZERO)
+        & min_distance.is_finite();
     let d = distance.max(min_distance);
     nan_unless(ok, (d * d).recip().min(T::MAX))
 }
 
 /// The smooth window saturate(1 - (d/r)^4)^2 that takes a falloff to exactly 0 at the light's
 /// radius r with zero slope. d >= r gives 0; r = 0 gives 0 (a light that reaches nothing);
-/// r = +inf gives 1 for every finite d.
+/// r = `T::MAX` gives 1 for every d below about 1e-2 `T::MAX`. NaN for an infinite or
+/// NaN d or r (rules 1 and 5).
 #[inline]
 fn window<T: Real>(distance: T, radius: T) -> T {
     let q = distance / radius;
     let q2 = q * q;
     let w = (T::ONE - q2 * q2).saturate();
-    // d / r is NaN for d = r = 0 and d = r = +inf: at r = 0 nothing is lit, and at r = +inf
-    // with d = +inf the falloff it multiplies is 0 anyway.
-    let empty = radius.simd_eq(T::ZERO) | distance.simd_eq(T::INFINITY);
-    T::select(empty, T::ZERO, w * w)
+    // d / r is NaN for d = r = 0: at r = 0 nothing is lit.
+    let empty = radius.simd_eq(T::ZERO);
+    nan_unless(
+        distance.is_finite() & radius.is_finite(),
+        T::select(empty, T::ZERO, w * w),
+    )
 }
 
 /// Unreal Engine 4's windowed falloff: saturate(1 - (d/r)^4)^2 / (d^2 + 1).
@@ -148,9 +161,9 @@ fn window<T: Real>(distance: T, radius: T) -> T {
 /// culled; the "+1" keeps the value finite at d = 0 (it acts as a 1-unit bulb, so d and r are
 /// in the units for which that is right: metres in Karis's notes).
 ///
-/// Domain: d >= 0, r >= 0, either may be +inf (NaN for negative or NaN input). Edges: d = 0
-/// gives 1 (for r > 0); d >= r gives 0; r = 0 gives 0; r = +inf gives 1 / (d^2 + 1); d = +inf
-/// gives 0.
+/// Domain: d >= 0 and r >= 0, both finite (NaN for negative, infinite or NaN input). Edges:
+/// d = 0 gives 1 (for r > 0); d >= r gives 0; r = 0 gives 0; r = `T::MAX` gives
+/// 1 / (d^2 + 1) (no window) for every d up to about 1e-2 `T::MAX`.
 ///
 /// Source: Karis 2013, "Real Shading in Unreal Engine 4", SIGGRAPH course "Physically Based
 /// Shading in Theory and Practice", eq. 9.
@@ -159,17 +172,16 @@ fn window<T: Real>(distance: T, radius: T) -> T {
 pub fn windowed<T: Real>(distance: T, radius: T) -> T {
     let ok = distance.simd_ge(T::ZERO) & radius.simd_ge(T::ZERO);
     let falloff = window(distance, radius) / distance.mul_add(distance, T::ONE);
-    // (d^2 + 1) is +inf for huge d, and w / inf = 0 already; only r = +inf, d = +inf needs the
-    // window guard above.
+    // (d^2 + 1) is +inf for huge finite d, and w / inf = 0.
     nan_unless(ok, falloff)
 }
 
 /// Frostbite's windowed inverse square: saturate(1 - (d/r)^4)^2 / max(d, d_min)^2, the
 /// physical 1/d^2 law with the same smooth window as [`windowed`].
 ///
-/// Domain: d >= 0, r >= 0 (either may be +inf), d_min > 0 finite; NaN otherwise. Edges: d = 0
-/// gives 1 / d_min^2 (for r > 0); d >= r or r = 0 gives 0; r = +inf gives
-/// [`inverse_square`].
+/// Domain: d >= 0, r >= 0, d_min > 0, all finite; NaN otherwise. Edges: d = 0 gives
+/// 1 / d_min^2 (for r > 0); d >= r or r = 0 gives 0; r = `T::MAX` gives [`inverse_square`]
+/// for every d up to about 1e-2 `T::MAX`.
 ///
 /// Source: Lagarde and de Rousiers 2014, "Moving Frostbite to Physically Based Rendering 3.0",
 /// SIGGRAPH course, section 4.3.3 (listing 24, `smoothDistanceAtt`).
@@ -186,9 +198,9 @@ pub fn windowed_inverse_square<T: Real>(distance: T, radius: T, min_distance: T)
 /// The constant-linear-quadratic attenuation of fixed-function pipelines:
 /// 1 / (k_c + k_l d + k_q d^2).
 ///
-/// Domain: k_c > 0, k_l >= 0, k_q >= 0, all finite; d >= 0 (+inf allowed); NaN otherwise.
-/// Edges: d = 0 gives 1 / k_c; d = +inf gives 0 unless k_l = k_q = 0 (then 1 / k_c: a
-/// term with a zero coefficient contributes 0, not 0 x inf). k_c = 1, k_l = 0, k_q = 1 is the
+/// Domain: k_c > 0, k_l >= 0, k_q >= 0, d >= 0, all finite; NaN otherwise (d = +inf
+/// included). Edges: d = 0 gives 1 / k_c; a term with a zero coefficient contributes 0 at
+/// every d (k_l = k_q = 0 gives 1 / k_c), not 0 x an overflowed d^2. k_c = 1, k_l = 0, k_q = 1 is the
 /// inverse square law softened at d < 1. A general numerator c_0 / (...) is a scale of this.
 /// Where 1 / k_c overflows (a subnormal k_c) the result is capped at the largest finite value.
 ///
@@ -204,8 +216,9 @@ pub fn polynomial<T: Real>(distance: T, constant: T, linear: T, quadratic: T) ->
         & linear.is_finite()
         & quadratic.simd_ge(T::ZERO)
         & quadratic.is_finite()
-        & distance.simd_ge(T::ZERO);
-    // A zero coefficient drops its term even at d = +inf.
+        & distance.simd_ge(T::ZERO)
+        & distance.is_finite();
+    // A zero coefficient drops its term even where d^2 overflows.
     let lin = T::select(linear.simd_gt(T::ZERO), linear * distance, T::ZERO);
     let quad = T::select(
         quadratic.simd_gt(T::ZERO),
@@ -220,7 +233,8 @@ pub fn polynomial<T: Real>(distance: T, constant: T, linear: T, quadratic: T) ->
 /// cos_outer)), where a is the angle between the spot's axis and the direction from the light
 /// to the point. 1 inside the inner cone, 0 outside the outer one, a smooth ramp between.
 ///
-/// Domain: all three cosines in [-1, 1] with cos_outer <= cos_inner (NaN otherwise). Edge:
+/// Domain: all three cosines in [-1, 1] with cos_outer <= cos_inner (NaN otherwise; cos a =
+/// +-inf counts as +-1, rules 3 and 5, while the cone's two cosines are parameters). Edge:
 /// cos_inner = cos_outer is a hard-edged cone: 1 for cos a >= cos_outer, 0 below (instead of
 /// 0 / 0).
 ///
@@ -230,6 +244,7 @@ pub fn polynomial<T: Real>(distance: T, constant: T, linear: T, quadratic: T) ->
 #[inline]
 #[must_use]
 pub fn spot_cone<T: Real>(cos_angle: T, cos_outer: T, cos_inner: T) -> T {
+    let cos_angle = unit_if_inf(cos_angle);
     let in_range = |c: T| c.simd_ge(-T::ONE) & c.simd_le(T::ONE);
     let ok = in_range(cos_angle)
         & in_range(cos_outer)
@@ -268,6 +283,11 @@ pub struct Attenuation<T> {
     kind: Kind<T>,
 }
 
+/// True where `x` is finite and >= 0.
+fn finite_non_negative<T: Real>(x: T) -> T::Mask {
+    x.simd_ge(T::ZERO) & x.is_finite()
+}
+
 /// `Ok` when `x` is finite and > 0 in every lane.
 fn require_positive<T: Real>(x: T, param: &'static str) -> Result<(), ParamError> {
     require::<T>(x.simd_gt(T::ZERO) & x.is_finite(), param, "finite and > 0")
@@ -282,18 +302,18 @@ impl<T: Real> Attenuation<T> {
         })
     }
 
-    /// [`windowed`] with `radius` >= 0 (+inf allowed: no window).
+    /// [`windowed`] with `radius` finite and >= 0 (`T::MAX`: no window).
     pub fn windowed(radius: T) -> Result<Self, ParamError> {
-        require::<T>(radius.simd_ge(T::ZERO), "radius", ">= 0")?;
+        require::<T>(finite_non_negative(radius), "radius", "finite and >= 0")?;
         Ok(Self {
             kind: Kind::Windowed { radius },
         })
     }
 
-    /// [`windowed_inverse_square`] with `radius` >= 0 (+inf allowed) and `min_distance` finite
-    /// and > 0.
+    /// [`windowed_inverse_square`] with `radius` finite and >= 0 (`T::MAX`: no window) and
+    /// `min_distance` finite and > 0.
     pub fn windowed_inverse_square(radius: T, min_distance: T) -> Result<Self, ParamError> {
-        require::<T>(radius.simd_ge(T::ZERO), "radius", ">= 0")?;
+        require::<T>(finite_non_negative(radius), "radius", "finite and >= 0")?;
         require_positive(min_distance, "min_distance")?;
         Ok(Self {
             kind: Kind::WindowedInverseSquare {
@@ -319,7 +339,7 @@ impl<T: Real> Attenuation<T> {
         })
     }
 
-    /// The falloff at `distance` >= 0 (+inf allowed); NaN for a negative or NaN distance.
+    /// The falloff at a finite `distance` >= 0; NaN for a negative, infinite or NaN distance.
     #[inline]
     #[must_use]
     pub fn eval(&self, distance: T) -> T {

@@ -257,11 +257,12 @@ fn kernel<T: Real>(
     )
 }
 
-/// Set where any component of either direction is NaN (a NaN tangent component would
-/// otherwise vanish in the half vector's normalization fallback).
+/// Set where any component of either direction is NaN or infinite (a NaN tangent component
+/// would otherwise vanish in the half vector's normalization fallback, and an infinite one
+/// would normalize to a plausible axis; crate docs, "Bad input", rules 1 and 5).
 #[inline]
-fn any_nan<T: Real>(a: V3<T>, b: V3<T>) -> T::Mask {
-    a.x.is_nan() | a.y.is_nan() | a.z.is_nan() | b.x.is_nan() | b.y.is_nan() | b.z.is_nan()
+fn any_nonfinite<T: Real>(a: V3<T>, b: V3<T>) -> T::Mask {
+    crate::vec3::any_nonfinite3(a) | crate::vec3::any_nonfinite3(b)
 }
 
 /// The metallic-roughness BRDF from dot products (the shader form): RGB
@@ -531,7 +532,7 @@ impl<T: Real> MetallicRoughness<T> {
 
     /// The BRDF f(wo, wi) in RGB (not multiplied by the cosine): the formula of the
     /// [module docs](self) with h = normalize(wo + wi). 0 where wo.z <= 0 or wi.z <= 0; NaN
-    /// where a component of wo or wi is NaN.
+    /// where a component of wo or wi is NaN or infinite.
     #[inline]
     #[must_use]
     pub fn eval(&self, wo: V3<T>, wi: V3<T>) -> V3<T> {
@@ -547,7 +548,7 @@ impl<T: Real> MetallicRoughness<T> {
             self.dielectric_f0(),
             self.dielectric_f90(),
             self.coupling,
-            any_nan(wo, wi),
+            any_nonfinite(wo, wi),
         )
     }
 
@@ -566,7 +567,7 @@ impl<T: Real> MetallicRoughness<T> {
     /// of kd base_color, with kd evaluated at the Schlick weight 1/21, the cosine-weighted
     /// hemispherical average of (1 - c)^5: the diffuse lobe sees v.h spread over its whole
     /// hemisphere, not n.v, so at grazing view its weight stays near its average while F(n.v)
-    /// goes to 1. NaN where a component of wo is NaN.
+    /// goes to 1. NaN where a component of wo is NaN or infinite.
     #[inline]
     #[must_use]
     pub fn specular_probability(&self, wo: V3<T>) -> T {
@@ -602,7 +603,7 @@ impl<T: Real> MetallicRoughness<T> {
         let p = T::select(no_specular, T::ZERO, p);
         // The selects above would turn a NaN view into a plausible probability, and only wo.z
         // reaches them: a NaN in any component of wo gives NaN.
-        nan_unless(!any_nan(wo, wo), p)
+        nan_unless(!any_nonfinite(wo, wo), p)
     }
 
     /// The one-sample MIS pdf (solid angle) of [`sample`](Self::sample):
@@ -616,6 +617,10 @@ impl<T: Real> MetallicRoughness<T> {
     /// normals there, so pdf integrates to 1 over the whole sphere and to
     /// 1 - P x (the fraction of specular samples reflected below the horizon) over the upper
     /// hemisphere (`cargo test --test material sampling:: -- --nocapture` prints both).
+    ///
+    /// A zero-length wo or wi is no direction: pdf 0 (so [`sample`](Self::sample) of a zero
+    /// wo returns a finite direction with pdf 0, and [`sample_weighted`](Self::sample_weighted)
+    /// weight 0). A NaN or infinite component of wo or wi gives NaN.
     #[inline]
     #[must_use]
     pub fn pdf(&self, wo: V3<T>, wi: V3<T>) -> T {
@@ -624,7 +629,11 @@ impl<T: Real> MetallicRoughness<T> {
         let ggx = self.ggx();
         let p_spec = sampling::reflect_pdf(sampling::visible_normal_pdf(&ggx, wo, h), wo.dot(h));
         let p_diff = sampling::cosine_hemisphere_pdf(wi);
-        nan_unless(!any_nan(wo, wi), lerp(p_diff, p_spec, p))
+        // A zero-length wo or wi is no direction: pdf 0 (without this, 0 / 0 in P for wo and a
+        // specular density about h = wo for wi).
+        let zero = crate::vec3::is_zero3(wo) | crate::vec3::is_zero3(wi);
+        let pdf = T::select(zero, T::ZERO, lerp(p_diff, p_spec, p));
+        nan_unless(!any_nonfinite(wo, wi), pdf)
     }
 
     /// Draws wi for the view `wo` by one-sample lobe selection and returns (wi, pdf) with pdf
@@ -641,7 +650,7 @@ impl<T: Real> MetallicRoughness<T> {
     /// reflects a grazing view downwards). It is returned as drawn, with its true pdf > 0;
     /// [`eval`](Self::eval) is 0 there, so its weight is 0 and the path ends (pbrt-v4 returns
     /// no sample in that case, which is the same estimator). wo at or below the horizon: the
-    /// BRDF is 0 and every weight is 0. A NaN in any component of wo, or in u1 or u2, gives a
+    /// BRDF is 0 and every weight is 0. A NaN or infinite component of wo, or a NaN u1 or u2, gives a
     /// NaN direction and pdf.
     #[inline]
     #[must_use]
@@ -658,7 +667,7 @@ impl<T: Real> MetallicRoughness<T> {
         let (wi_diff, _) = sampling::cosine_hemisphere(u, u2);
         let wi = V3::select(specular, wo.mirror(m), wi_diff);
         // A diffuse wi does not depend on wo: a NaN view must still give a NaN direction.
-        let bad = any_nan(wo, wo);
+        let bad = any_nonfinite(wo, wo);
         let nan = T::splat(f64::NAN);
         let wi = V3::new(
             T::select(bad, nan, wi.x),

@@ -30,7 +30,7 @@ use crate::domain::{nan_unless, nan_where};
 use crate::error::{ParamError, require};
 use crate::real::Real;
 use crate::vec3::V3;
-use crate::vec3::any_nan3;
+use crate::vec3::any_nonfinite3;
 
 /// The smallest alpha the kernels evaluate with; smaller (including 0) is clamped up to it. As a
 /// perceptual roughness ([`alpha_from_perceptual`]): r = 0.01. Filament clamps higher, at r = 0.045
@@ -65,9 +65,13 @@ pub const ALPHA_MAX: f64 = 1e4;
 /// implementing type, given to its constructor as alpha, the width (not perceptual roughness:
 /// see the [roughness conventions](crate::microfacet#roughness-conventions) and
 /// [`alpha_from_perceptual`]).
+///
+/// Bad input (crate docs, "Bad input"): a NaN or infinite component of any direction gives NaN
+/// in every method; a zero-length direction has cosine 0 and takes the horizon's values
+/// (G1 = 0, Lambda capped at MAX, D_wo = 0), never the 0 / 0 of its components.
 pub trait Microfacet<T: Real> {
     /// NDF D(m); 0 for m.z <= 0. Normalized: integral of D(m) m.z dm = 1. Domain: m a unit
-    /// vector; NaN in any component gives NaN.
+    /// vector; a NaN or infinite component gives NaN.
     fn d(&self, m: V3<T>) -> T;
 
     /// Smith Lambda(w) >= 0, a function of |w.z| (symmetric under w -> -w); its pole at the
@@ -125,12 +129,12 @@ pub trait Microfacet<T: Real> {
         let den = co * ci + ci * self.cos_lambda(wo) + co * self.cos_lambda(wi);
         let den4 = T::splat(4.0) * den;
         let v = T::select(den4.simd_gt(T::ZERO), den4.recip().min(T::MAX), T::ZERO);
-        nan_where(any_nan3(wo) | any_nan3(wi) | den.is_nan(), v)
+        nan_where(any_nonfinite3(wo) | any_nonfinite3(wi) | den.is_nan(), v)
     }
 
     /// Distribution of visible normals D_wo(m) = G1(wo) max(0, wo.m) D(m) / |wo.z| (Heitz
     /// 2014, eq. 38). It integrates to 1 over m for every wo with wo.z != 0; 0 when wo.z = 0;
-    /// capped at the largest finite value; NaN for NaN in any component of either vector.
+    /// capped at the largest finite value; NaN for a NaN or infinite component of either vector.
     #[inline]
     #[must_use]
     fn d_visible(&self, wo: V3<T>, m: V3<T>) -> T {
@@ -141,7 +145,7 @@ pub trait Microfacet<T: Real> {
         let v = T::select(c.simd_gt(T::ZERO), g1_over_cos, T::ZERO);
         // Each factor is finite; the product of a large 1 / |wo.z| and a large D may not be.
         let value = (v * wo.dot(m).max(T::ZERO)).min(T::MAX) * self.d(m);
-        nan_where(any_nan3(wo) | cl.is_nan(), value.min(T::MAX))
+        nan_where(any_nonfinite3(wo) | cl.is_nan(), value.min(T::MAX))
     }
 }
 
@@ -235,10 +239,10 @@ pub fn alpha_from_perceptual<T: Real>(roughness: T) -> T {
 
 /// alpha to perceptual roughness r = sqrt(alpha) (the inverse of [`alpha_from_perceptual`] between
 /// the clamps): the value a glTF `roughnessFactor` or a UE4 `Roughness` slider holds for a given
-/// alpha. Domain alpha in [0, +inf); alpha < 0 or NaN gives NaN, +inf gives +inf. Correctly rounded
-/// (one square root).
+/// alpha. Domain alpha in [0, +inf) finite; alpha < 0, +inf or NaN gives NaN (crate docs,
+/// "Bad input", rule 5). Correctly rounded (one square root).
 #[inline]
 #[must_use]
 pub fn perceptual_from_alpha<T: Real>(alpha: T) -> T {
-    nan_unless(alpha.simd_ge(T::ZERO), alpha.sqrt())
+    nan_unless(alpha_ok(alpha), alpha.sqrt())
 }

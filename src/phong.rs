@@ -63,7 +63,7 @@
 //! phong,integrate --test phong -- --nocapture` (its modules `energy`, `reciprocity`,
 //! `normalization` and `stability`).
 
-use crate::domain::{above_horizon, in_unit, nan_unless};
+use crate::domain::{above_horizon, finite_dirs, in_unit, nan_unless, unit_if_inf};
 use crate::dw::Dw;
 use crate::error::{ParamError, require};
 use crate::real::Real;
@@ -204,6 +204,8 @@ pub fn blinn_phong_normalization_approx<T: Real>(exponent: T) -> T {
 #[inline]
 #[must_use]
 pub fn classic<T: Real>(n_dot_v: T, n_dot_l: T, r_dot_l: T, ks: T, exponent: T) -> T {
+    // An infinite n.l counts as 1 (rules 3 and 5): ks / inf would be a plausible 0.
+    let n_dot_l = unit_if_inf(n_dot_l);
     // ks / n.l first (at most 1 / MIN_POSITIVE, finite), then the lobe: a subnormal lobe is
     // then rounded once more at most, not scaled up after a subnormal product.
     let f = ks / n_dot_l.max(T::MIN_POSITIVE) * lobe(r_dot_l, exponent);
@@ -465,7 +467,8 @@ macro_rules! phong_type {
             #[inline]
             #[must_use]
             pub fn eval(&self, wo: V3<T>, wi: V3<T>) -> T {
-                $kernel(wo.z, wi.z, $dot(wo, wi), self.ks, self.exponent)
+                let f = $kernel(wo.z, wi.z, $dot(wo, wi), self.ks, self.exponent);
+                finite_dirs(wo, wi, f)
             }
         }
     };
@@ -557,6 +560,7 @@ impl<T: Real> PhongDiffuseSpecular<T> {
     #[inline]
     #[must_use]
     pub fn eval(&self, wo: V3<T>, wi: V3<T>) -> T {
-        diffuse_specular(wo.z, wi.z, r_dot_l(wo, wi), self.kd, self.ks, self.exponent)
+        let f = diffuse_specular(wo.z, wi.z, r_dot_l(wo, wi), self.kd, self.ks, self.exponent);
+        finite_dirs(wo, wi, f)
     }
 }

@@ -43,7 +43,7 @@
 use crate::domain::nan_where;
 use crate::real::Real;
 use crate::vec3::V3;
-use crate::vec3::any_nan3;
+use crate::vec3::any_nonfinite3;
 
 #[cfg(feature = "beckmann")]
 use crate::beckmann::Beckmann;
@@ -87,7 +87,7 @@ pub fn cosine_hemisphere<T: Real>(u1: T, u2: T) -> (V3<T>, T) {
 #[inline]
 #[must_use]
 pub fn cosine_hemisphere_pdf<T: Real>(w: V3<T>) -> T {
-    nan_where(any_nan3(w), w.z.max(T::ZERO) * T::FRAC_1_PI)
+    nan_where(any_nonfinite3(w), w.z.max(T::ZERO) * T::FRAC_1_PI)
 }
 
 /// pdf of a reflected direction whose half vector m was drawn with pdf `pdf_m`:
@@ -97,9 +97,12 @@ pub fn cosine_hemisphere_pdf<T: Real>(w: V3<T>) -> T {
 #[inline]
 #[must_use]
 pub fn reflect_pdf<T: Real>(pdf_m: T, v_dot_h: T) -> T {
+    // v.h is a cosine: +-inf counts as +-1 (rules 3 and 5), not as a 0 pdf.
+    let v_dot_h = crate::domain::unit_if_inf(v_dot_h);
     let den = T::splat(4.0) * v_dot_h.abs();
     let v = T::select(den.simd_gt(T::ZERO), (pdf_m / den).min(T::MAX), T::ZERO);
-    nan_where(!pdf_m.simd_ge(T::ZERO) | v_dot_h.is_nan(), v)
+    let pdf_ok = pdf_m.simd_ge(T::ZERO) & pdf_m.simd_lt(T::INFINITY);
+    nan_where(!pdf_ok | v_dot_h.is_nan(), v)
 }
 
 /// Microfacet normal from a slope (sx, sy) of the unit-roughness distribution, stretched by
@@ -159,7 +162,9 @@ pub fn d_cos_pdf<T: Real, M: Microfacet<T> + ?Sized>(dist: &M, m: V3<T>) -> T {
 }
 
 /// pdf of the visible-normal samplers: D_wo(m) (`Microfacet::d_visible`), with wo mirrored into
-/// the upper hemisphere as the samplers do.
+/// the upper hemisphere as the samplers do. 0 for wo at the horizon or of zero length (a
+/// visible-normal sampler given the zero vector returns a finite normal with this pdf, 0);
+/// NaN for a NaN or infinite component of wo.
 #[cfg(any(feature = "ggx", feature = "beckmann"))]
 #[inline]
 #[must_use]
@@ -210,7 +215,7 @@ pub fn ggx_vndf<T: Real>(ggx: &Ggx<T>, wo: V3<T>, u1: T, u2: T) -> (V3<T>, T) {
     let lift = (T::ONE - p1 * p1 - p2 * p2).sqrt_nonneg();
     let nh = t1 * p1 + t2 * p2 + vh * lift;
     let m = V3::new(ax * nh.x, ay * nh.y, nh.z.max(T::ZERO)).normalize_or(V3::unit_z());
-    let bad = any_nan3(wo) | u1.is_nan() | u2.is_nan() | ax.is_nan() | ay.is_nan();
+    let bad = any_nonfinite3(wo) | u1.is_nan() | u2.is_nan() | ax.is_nan() | ay.is_nan();
     nan_sample(bad, m, visible_normal_pdf(ggx, wo, m))
 }
 
@@ -236,7 +241,7 @@ pub fn ggx_vndf_spherical_cap<T: Real>(ggx: &Ggx<T>, wo: V3<T>, u1: T, u2: T) ->
     let c = V3::new(sin_theta * phi.cos(), sin_theta * phi.sin(), z);
     let h = c + v;
     let m = V3::new(ax * h.x, ay * h.y, h.z.max(T::ZERO)).normalize_or(V3::unit_z());
-    let bad = any_nan3(wo) | u1.is_nan() | u2.is_nan() | ax.is_nan() | ay.is_nan();
+    let bad = any_nonfinite3(wo) | u1.is_nan() | u2.is_nan() | ax.is_nan() | ay.is_nan();
     nan_sample(bad, m, visible_normal_pdf(ggx, wo, m))
 }
 
@@ -411,7 +416,7 @@ pub fn beckmann_vndf<T: Real>(beckmann: &Beckmann<T>, wo: V3<T>, u1: T, u2: T) -
     let rx = cos_p * sx - sin_p * sy;
     let ry = sin_p * sx + cos_p * sy;
     let m = normal_from_slope(rx, ry, ax, ay);
-    let bad = any_nan3(wo) | u1.is_nan() | u2.is_nan() | ax.is_nan() | ay.is_nan();
+    let bad = any_nonfinite3(wo) | u1.is_nan() | u2.is_nan() | ax.is_nan() | ay.is_nan();
     nan_sample(bad, m, visible_normal_pdf(beckmann, wo, m))
 }
 
@@ -435,9 +440,10 @@ fn vndf_reflection_pdf<T: Real, M: Microfacet<T> + ?Sized>(dist: &M, wo: V3<T>, 
         .recip()
         .min(T::MAX);
     // wo.h = |wo + wi| / 2 >= 0 analytically; 0 only for wi = -wo, where h is undefined.
-    let visible = c.simd_gt(T::ZERO) & wo.dot(h).simd_gt(T::ZERO);
+    // A zero-length wi has no reflection Jacobian: pdf 0, like wi = -wo (and wo = 0 has c = 0).
+    let visible = c.simd_gt(T::ZERO) & wo.dot(h).simd_gt(T::ZERO) & !crate::vec3::is_zero3(wi);
     let p = T::select(visible, (inv * dist.d(h)).min(T::MAX), T::ZERO);
-    nan_where(any_nan3(wo) | any_nan3(wi), p)
+    nan_where(any_nonfinite3(wo) | any_nonfinite3(wi), p)
 }
 
 /// The sample of a reflection sampler without its Fresnel factor: (wi, pdf, G2 / G1(wo),
@@ -459,11 +465,13 @@ fn reflection_parts<T: Real, M: Microfacet<T> + ?Sized>(
     (wi, pdf, ratio, wo.dot(m).saturate())
 }
 
-/// The weight F G2 / G1 of one channel: NaN where F is NaN or negative, capped at MAX.
+/// The weight F G2 / G1 of one channel: NaN where F is NaN, negative or infinite (rule 5),
+/// capped at MAX.
 #[cfg(any(feature = "ggx", feature = "beckmann"))]
 #[inline]
 fn weigh<T: Real>(ratio: T, f: T) -> T {
-    crate::domain::nan_unless(f.simd_ge(T::ZERO), (ratio * f).min(T::MAX))
+    let ok = f.simd_ge(T::ZERO) & f.simd_lt(T::INFINITY);
+    crate::domain::nan_unless(ok, (ratio * f).min(T::MAX))
 }
 
 /// Samples the Cook-Torrance reflection lobe of a GGX surface and returns (wi, pdf, weight):
@@ -548,8 +556,9 @@ pub fn ggx_reflection_rgb<T: Real>(
 /// Domain: unit local-frame vectors. Integrates to 1 over the whole sphere of wi for every
 /// wo above the horizon; where wi is below the horizon it is the density of the samples
 /// reflected there (> 0), for which the weight is 0. 0 where wo.z <= 0 (the lobe is
-/// reflection only and the sampler returns pdf 0 there) and where wi = -wo. Capped at the
-/// largest finite value. NaN for NaN in any component of wo or wi.
+/// reflection only and the sampler returns pdf 0 there, a zero-length wo included), where
+/// wi = -wo and where wi is the zero vector. Capped at the largest finite value. NaN for a
+/// NaN or infinite component of wo or wi.
 #[cfg(feature = "ggx")]
 #[inline]
 #[must_use]
@@ -620,8 +629,8 @@ pub fn beckmann_reflection_rgb<T: Real>(
 /// pdf (solid angle) of [`beckmann_reflection`] and [`beckmann_reflection_rgb`]:
 /// G1(wo) D(h) / (4 wo.z) with h = normalize(wo + wi); form, domain and edges as
 /// `ggx_reflection_pdf`: integrates to 1 over the sphere of wi for wo above the horizon, > 0
-/// below the horizon (where the weight is 0), 0 where wo.z <= 0 or wi = -wo, capped at the
-/// largest finite value, NaN for NaN in any component.
+/// below the horizon (where the weight is 0), 0 where wo.z <= 0, wi = -wo or wi = 0, capped at the
+/// largest finite value, NaN for a NaN or infinite component.
 #[cfg(feature = "beckmann")]
 #[inline]
 #[must_use]

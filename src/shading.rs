@@ -35,9 +35,10 @@
 //! same order: they are what a shader calls, and the crate's WGSL twins and reference CLI map
 //! onto them one to one.
 
+use crate::domain::{finite_or_nan, nan_where};
 use crate::frame::Frame;
 use crate::real::Real;
-use crate::vec3::V3;
+use crate::vec3::{V3, any_nonfinite3};
 
 /// The four cosines of a shading point: n.v, n.l, n.h and v.h, with v the unit direction
 /// towards the viewer, l the unit direction towards the light, n the unit normal and
@@ -72,45 +73,51 @@ impl<T: Real> Cosines<T> {
     /// `cook_torrance::half_cosines`), symmetric in v and l bit for bit.
     ///
     /// Domain: unit vectors (the results carry their length errors). v = -l gives n.h = 1 and
-    /// v.h = 0; a NaN component gives NaN in every cosine that reads it.
+    /// v.h = 0; a NaN or infinite component gives NaN in every cosine that reads its vector
+    /// (the crate's rules 1 and 5).
     #[inline]
     #[must_use]
     pub fn from_world(n: V3<T>, v: V3<T>, l: V3<T>) -> Self {
         let (n_dot_h, v_dot_h) = half_cosines_about(n, v, l);
+        // Rule 5: an infinite component is no direction; NaN wherever a NaN would reach.
+        let (bad_n, bad_v, bad_l) = (any_nonfinite3(n), any_nonfinite3(v), any_nonfinite3(l));
         Self {
-            n_dot_v: n.dot(v),
-            n_dot_l: n.dot(l),
-            n_dot_h,
-            v_dot_h,
+            n_dot_v: nan_where(bad_n | bad_v, n.dot(v)),
+            n_dot_l: nan_where(bad_n | bad_l, n.dot(l)),
+            n_dot_h: nan_where(bad_n | bad_v | bad_l, n_dot_h),
+            v_dot_h: nan_where(bad_v | bad_l, v_dot_h),
         }
     }
 
     /// The cosines of local-frame unit directions (the normal is +z): `wo` towards the viewer,
-    /// `wi` towards the light. For finite directions equal to `from_world(V3::unit_z(), wo, wi)` bit for bit.
+    /// `wi` towards the light. For finite directions equal to `from_world(V3::unit_z(), wo, wi)`
+    /// bit for bit. n.v is wo.z and n.l is wi.z; a NaN or infinite component of either
+    /// direction makes n.h and v.h NaN, and one in wo.z (wi.z) makes n.v (n.l) NaN.
     #[inline]
     #[must_use]
     pub fn from_local(wo: V3<T>, wi: V3<T>) -> Self {
         let s = wo + wi;
         let len = s.length();
         let n_dot_h = T::select(len.simd_eq(T::ZERO), T::ONE, s.z / len);
+        let bad = any_nonfinite3(wo) | any_nonfinite3(wi);
         Self {
-            n_dot_v: wo.z,
-            n_dot_l: wi.z,
-            n_dot_h,
-            v_dot_h: (T::HALF * len).min(T::ONE),
+            n_dot_v: finite_or_nan(wo.z),
+            n_dot_l: finite_or_nan(wi.z),
+            n_dot_h: nan_where(bad, n_dot_h),
+            v_dot_h: nan_where(bad, (T::HALF * len).min(T::ONE)),
         }
     }
 }
 
 /// n.h and v.h from s = v + l: v.h = |s| / 2 (clamped to 1), n.h = n.s / |s|; s = 0 gives
-/// (1, 0). NaN in any component gives NaN in both.
+/// (1, 0). A NaN or infinite component gives NaN in both.
 #[inline]
 fn half_cosines_about<T: Real>(n: V3<T>, v: V3<T>, l: V3<T>) -> (T, T) {
     let s = v + l;
     let len = s.length();
     let n_dot_h = T::select(len.simd_eq(T::ZERO), T::ONE, n.dot(s) / len);
     // s = 0 selects 1 without reading n: a NaN normal must still give NaN.
-    let n_dot_h = crate::domain::nan_where(crate::vec3::any_nan3(n), n_dot_h);
+    let n_dot_h = crate::domain::nan_where(crate::vec3::any_nonfinite3(n), n_dot_h);
     (n_dot_h, (T::HALF * len).min(T::ONE))
 }
 
@@ -147,7 +154,7 @@ pub struct ShadingPoint<T> {
 
 impl<T: Real> ShadingPoint<T> {
     /// The shading point of unit normal `n` and unit view direction `v` (world space, `v`
-    /// pointing away from the surface towards the viewer). A NaN component of `n` gives an
+    /// pointing away from the surface towards the viewer). A NaN or infinite component of `n` gives an
     /// all-NaN frame; a NaN in `v` a NaN `wo`.
     #[inline]
     #[must_use]

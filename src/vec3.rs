@@ -577,3 +577,32 @@ impl V3<f64x4> {
 pub(crate) fn any_nan3<T: Real>(v: V3<T>) -> T::Mask {
     v.x.is_nan() | v.y.is_nan() | v.z.is_nan()
 }
+
+/// True in lanes where any component of `v` is NaN or infinite: the guard of every kernel that
+/// takes a direction, a normal or a colour (crate docs, "Bad input", rules 1 and 5). A
+/// direction (inf, 0, 1) has no one meaning, so it gives NaN like a NaN component; the `V3`
+/// arithmetic helpers keep [`any_nan3`] and IEEE arithmetic.
+#[inline]
+#[must_use]
+pub(crate) fn any_nonfinite3<T: Real>(v: V3<T>) -> T::Mask {
+    !(v.x.is_finite() & v.y.is_finite() & v.z.is_finite())
+}
+
+/// True in lanes where `v` is the zero vector (every component +-0).
+#[inline]
+#[must_use]
+#[allow(dead_code)] // used by the microfacet, sampling, material and IBL features
+pub(crate) fn is_zero3<T: Real>(v: V3<T>) -> T::Mask {
+    v.x.simd_eq(T::ZERO) & v.y.simd_eq(T::ZERO) & v.z.simd_eq(T::ZERO)
+}
+
+/// `v`, or the horizon direction +x where `v` is the zero vector. A zero-length direction has
+/// cosine 0 with the normal, like a horizon direction, and the microfacet terms give it the
+/// horizon's value (G1 = 0, the capped Lambda pole) instead of the 0 / 0 of its zero
+/// components: finite input, finite output (crate docs, "Bad input", rule 5's last sentence).
+#[inline]
+#[must_use]
+#[allow(dead_code)] // used by the microfacet, sampling, material and IBL features
+pub(crate) fn horizon_if_zero3<T: Real>(v: V3<T>) -> V3<T> {
+    V3::select(is_zero3(v), V3::new(T::ONE, T::ZERO, T::ZERO), v)
+}

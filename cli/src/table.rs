@@ -2,7 +2,7 @@
 //!
 //! # How a Rust signature becomes a row of arguments
 //! The arguments of a kernel are the Rust function's parameters, in order, after these rules
-//! (`tests/table_drift.rs` parses `brdf`'s source with `syn` and holds every entry to them):
+//! (`cli/tests/cli/drift.rs` parses `brdf`'s source with `syn` and holds every entry to them):
 //!
 //! - a scalar parameter `x: T` is one argument `x`;
 //! - a vector `w: V3<T>` is three arguments `w_x`, `w_y`, `w_z`, or `w_r`, `w_g`, `w_b` where
@@ -515,15 +515,17 @@ const HDR: Domain = Domain::closed(
     f64::INFINITY,
     "every value (negative -> 0, above MAX_INPUT -> MAX_INPUT)",
 );
-/// An input of the colour transfer functions: every value (negative clamped to 0, +inf
-/// passes through), NaN excluded.
-const SIGNAL: Domain = Domain::closed(
+/// An input of the colour transfer functions: every finite value (negative clamped to 0;
+/// +-inf give NaN, the crate's rule 5).
+const SIGNAL: Domain = Domain::new(
     f64::NEG_INFINITY,
+    true,
     f64::INFINITY,
-    "every value (negative -> 0, +inf gives +inf)",
+    true,
+    "every finite value (negative -> 0)",
 );
-/// A distance: >= 0, +inf allowed.
-const DISTANCE: Domain = Domain::closed(0.0, f64::INFINITY, ">= 0, +inf allowed");
+/// A distance or a light's radius: >= 0 and finite (+inf gives NaN, the crate's rule 5).
+const DISTANCE: Domain = Domain::new(0.0, false, f64::INFINITY, true, ">= 0, finite");
 /// A strictly positive finite parameter.
 const POS: Domain = Domain::POSITIVE;
 /// A tonemapper's display-referred output.
@@ -1142,8 +1144,7 @@ pub static KERNELS: &[Kernel] = &[
     kernel!(
         "microfacet::perceptual_from_alpha",
         "Perceptual roughness r = sqrt(alpha), Burley 2012; Karis 2013",
-        [alpha: Domain::closed(0.0, f64::INFINITY, "[0, +inf), +inf gives +inf")]
-            -> [roughness: Domain::NONNEG_INF],
+        [alpha: Domain::NONNEG] -> [roughness: Domain::NONNEG],
         [microfacet::perceptual_from_alpha(alpha)]
     ),
     // ---------------------------------------------------------------- ggx
@@ -1334,7 +1335,7 @@ pub static KERNELS: &[Kernel] = &[
         "beckmann::alpha_from_blinn_phong",
         "Beckmann alpha = sqrt(2 / (n + 2)) of a Blinn-Phong exponent, Walter et al. 2007 \
          section 5.2",
-        [exponent: Domain::closed(0.0, f64::INFINITY, "[0, +inf]")] -> [alpha: Domain::UNIT],
+        [exponent: EXPONENT] -> [alpha: Domain::UNIT],
         [beckmann::alpha_from_blinn_phong(exponent)]
     ),
     kernel!(
@@ -2631,7 +2632,7 @@ pub static KERNELS: &[Kernel] = &[
     kernel!(
         "ibl::prefilter::mip_level",
         "Filtered importance sampling mip level, Krivanek and Colbert 2008",
-        [pdf: Domain::closed(0.0, f64::INFINITY, ">= 0, +inf allowed"),
+        [pdf: Domain::NONNEG,
          sample_count: Domain::new(1.0, false, f64::INFINITY, true, ">= 1 and finite"),
          face_size: Domain::new(1.0, false, f64::INFINITY, true, ">= 1 and finite (texels)")]
             -> [lod: Domain::NONNEG],

@@ -216,7 +216,7 @@ impl<T: Real> ShirleyCoupled<T> {
     }
 
     /// f(wo, wi) of [`shirley_coupled`] on local-frame unit vectors (normal = +z); NaN where
-    /// any component of wo or wi is NaN.
+    /// any component of wo or wi is NaN or infinite.
     #[inline]
     #[must_use]
     pub fn eval(&self, wo: V3<T>, wi: V3<T>) -> T {
@@ -254,7 +254,7 @@ impl<T: Real> AshikhminShirley<T> {
     }
 
     /// f(wo, wi) of [`ashikhmin_shirley`] on local-frame unit vectors (normal = +z); NaN where
-    /// any component of wo or wi is NaN.
+    /// any component of wo or wi is NaN or infinite.
     #[inline]
     #[must_use]
     pub fn eval(&self, wo: V3<T>, wi: V3<T>) -> T {

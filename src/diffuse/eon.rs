@@ -38,12 +38,12 @@
 //! As everywhere in this crate, a parameter outside its domain gives NaN for every pair of
 //! directions, those below the horizon included, and a NaN input gives NaN.
 
-use crate::domain::{above_horizon, checked_unit, in_unit, nan_unless, nan_where};
+use crate::domain::{above_horizon, checked_unit, in_unit, nan_unless, nan_where, unit_if_inf};
 use crate::dw::Dw;
 use crate::error::{ParamError, require};
 use crate::real::Real;
 use crate::vec3::V3;
-use crate::vec3::any_nan3;
+use crate::vec3::any_nonfinite3;
 
 /// c1 = 1/2 - 2/(3 pi) = G(0)/pi: Fujii's normalization A = 1/(1 + c1 sigma) makes the FON
 /// albedo exactly 1 at grazing incidence and below 1 elsewhere.
@@ -155,6 +155,8 @@ fn eon_with<T: Real>(
     sigma: T,
     pi_loss: impl Fn(T) -> Dw<T>,
 ) -> T {
+    // An infinite v.l counts as +-1 (rules 3 and 5) before the shape forms inf * 0.
+    let v_dot_l = unit_if_inf(v_dot_l);
     let rho = checked_unit(rho);
     let sigma = checked_unit(sigma);
     let mu_o = n_dot_v.clamp(T::ZERO, T::ONE);
@@ -563,7 +565,7 @@ pub fn eon_cltc_sample<T: Real>(wo: V3<T>, sigma: T, u1: T, u2: T) -> (V3<T>, T)
     // The pdf does not depend on wo's azimuth, but a NaN there (which makes wi.x NaN) must
     // still reach it.
     let pdf = nan_unless(in_unit(sigma), above_horizon(wo.z, wi.z, pdf));
-    nan_sample(any_nan3(wo), (wi, pdf))
+    nan_sample(any_nonfinite3(wo), (wi, pdf))
 }
 
 /// (NaN, NaN) where `bad`: a NaN in a component of wo that the sampler's formula does not
@@ -578,7 +580,8 @@ fn nan_sample<T: Real>(bad: T::Mask, (wi, pdf): (V3<T>, T)) -> (V3<T>, T) {
 /// (adj(M) w).z) / (pi s), with w = wi in wo's azimuthal frame and adj(M) = det(M) M^-1.
 ///
 /// Domain: wo, wi unit vectors, sigma in [0, 1] (NaN outside). 0 where wi.z <= 0 or
-/// wo.z <= 0; NaN in any input gives NaN. Integrates to 1 over the upper hemisphere.
+/// wo.z <= 0 (a zero-length wo or wi included); NaN in any input, or an infinite component of
+/// wo or wi, gives NaN. Integrates to 1 over the upper hemisphere.
 ///
 /// Source: Portsmouth, Kutz, Hill 2025, the `cltc_pdf` listing.
 #[inline]
@@ -587,7 +590,7 @@ pub fn eon_cltc_pdf<T: Real>(wo: V3<T>, wi: V3<T>, sigma: T) -> T {
     let ltc = Cltc::new(wo, checked_unit(sigma));
     let pdf = nan_unless(in_unit(sigma), above_horizon(wo.z, wi.z, ltc.pdf(wi)));
     // Below the horizon the guard gives 0 whatever wo.x, wo.y, wi.x, wi.y are: keep their NaN.
-    nan_where(any_nan3(wo) | any_nan3(wi), pdf)
+    nan_where(any_nonfinite3(wo) | any_nonfinite3(wi), pdf)
 }
 
 /// Probability of the uniform lobe in EON's sampling mixture, the paper's fit
@@ -638,7 +641,7 @@ pub fn eon_sample<T: Real>(wo: V3<T>, sigma: T, u1: T, u2: T) -> (V3<T>, T) {
     let wu = V3::new(sin_theta * cos_phi, sin_theta * sin_phi, z);
     let (wc, _) = ltc.sample_disk(clamp_u((u1 - p_u) / (T::ONE - p_u)), cos_phi, sin_phi);
     let wi = V3::select(uniform, wu, wc);
-    nan_sample(any_nan3(wo), (wi, mixture_pdf(&ltc, p_u, wo, wi)))
+    nan_sample(any_nonfinite3(wo), (wi, mixture_pdf(&ltc, p_u, wo, wi)))
 }
 
 #[inline]
@@ -647,7 +650,7 @@ fn mixture_pdf<T: Real>(ltc: &Cltc<T>, p_u: T, wo: V3<T>, wi: V3<T>) -> T {
     let pdf = p_u.mul_add(T::splat(0.5) * T::FRAC_1_PI - pdf_c, pdf_c);
     // p_u is NaN for a bad sigma, and the horizon guard ignores wo.x, wo.y, wi.x, wi.y: keep
     // their NaN below the horizon too.
-    let bad = p_u.is_nan() | any_nan3(wo) | any_nan3(wi);
+    let bad = p_u.is_nan() | any_nonfinite3(wo) | any_nonfinite3(wi);
     nan_where(bad, above_horizon(wo.z, wi.z, pdf))
 }
 
@@ -655,7 +658,8 @@ fn mixture_pdf<T: Real>(ltc: &Cltc<T>, p_u: T, wo: V3<T>, wi: V3<T>) -> T {
 /// and pdf_CLTC as there ([`eon_cltc_pdf`]).
 ///
 /// Domain: wo, wi unit vectors, sigma in [0, 1] (NaN outside). 0 where wi.z <= 0 or
-/// wo.z <= 0; NaN in any input gives NaN. Integrates to 1 over the upper hemisphere.
+/// wo.z <= 0 (a zero-length wo or wi included); NaN in any input, or an infinite component of
+/// wo or wi, gives NaN. Integrates to 1 over the upper hemisphere.
 ///
 /// Source: Portsmouth, Kutz, Hill 2025, the `pdf_EON` listing.
 #[inline]
@@ -713,19 +717,22 @@ impl<T: Real> Eon<T> {
         super::nan_if_nan_dir(wo, wi, f)
     }
 
-    /// Directional albedo at wo ([`eon_albedo`]); NaN where a component of wo is NaN.
+    /// Directional albedo at wo ([`eon_albedo`]); NaN where a component of wo is NaN or infinite.
     #[inline]
     #[must_use]
     pub fn albedo(&self, wo: V3<T>) -> T {
-        nan_where(any_nan3(wo), eon_albedo(wo.z, self.rho, self.sigma))
+        nan_where(any_nonfinite3(wo), eon_albedo(wo.z, self.rho, self.sigma))
     }
 
     /// Directional albedo of the fitted model at wo ([`eon_albedo_approx`]); NaN where a
-    /// component of wo is NaN.
+    /// component of wo is NaN or infinite.
     #[inline]
     #[must_use]
     pub fn albedo_approx(&self, wo: V3<T>) -> T {
-        nan_where(any_nan3(wo), eon_albedo_approx(wo.z, self.rho, self.sigma))
+        nan_where(
+            any_nonfinite3(wo),
+            eon_albedo_approx(wo.z, self.rho, self.sigma),
+        )
     }
 
     /// A direction wi and its solid-angle pdf ([`eon_sample`]).

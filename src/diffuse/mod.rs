@@ -37,7 +37,7 @@ use crate::dw::Dw;
 use crate::error::{ParamError, require};
 use crate::real::Real;
 use crate::vec3::V3;
-use crate::vec3::any_nan3;
+use crate::vec3::any_nonfinite3;
 
 mod burley;
 mod coupling;
@@ -87,7 +87,7 @@ fn rho_over_pi<T: Real>(rho: T, x: T) -> T {
 /// components (Lambert only the two z), and a NaN in another one must still give NaN.
 #[inline]
 fn nan_if_nan_dir<T: Real>(wo: V3<T>, wi: V3<T>, value: T) -> T {
-    nan_where(any_nan3(wo) | any_nan3(wi), value)
+    nan_where(any_nonfinite3(wo) | any_nonfinite3(wi), value)
 }
 
 /// Lambert's diffuse BRDF, f = rho / pi: light scattered equally into every direction of the
@@ -133,7 +133,7 @@ impl<T: Real> Lambert<T> {
     }
 
     /// f(wo, wi) = rho / pi for wo and wi above the horizon, else 0 ([`lambert`]); NaN where
-    /// any component of wo or wi is NaN.
+    /// any component of wo or wi is NaN or infinite.
     #[inline]
     #[must_use]
     pub fn eval(&self, wo: V3<T>, wi: V3<T>) -> T {

@@ -45,7 +45,7 @@
 //! normal view. Fujii's form stays at or below rho everywhere, reaching rho at grazing view
 //! by construction (0.9996 at theta_o = 89.9 deg, sigma = 1).
 
-use crate::domain::{above_horizon, checked_unit, in_unit, nan_unless};
+use crate::domain::{above_horizon, checked_unit, in_unit, nan_unless, unit_if_inf};
 use crate::dw::Dw;
 use crate::error::{ParamError, require};
 use crate::real::Real;
@@ -100,6 +100,12 @@ pub fn oren_nayar_b<T: Real>(sigma: T) -> T {
 
 #[inline]
 fn qualitative_kernel<T: Real>(n_dot_v: T, n_dot_l: T, v_dot_l: T, rho: T, a: T, b: T) -> T {
+    // Infinite cosines count as +-1 (rules 3 and 5), before s = v.l - n.v n.l forms inf - inf.
+    let (n_dot_v, n_dot_l, v_dot_l) = (
+        unit_if_inf(n_dot_v),
+        unit_if_inf(n_dot_l),
+        unit_if_inf(v_dot_l),
+    );
     // cos(phi) sin(alpha) tan(beta) = s / cos(beta) with cos(beta) = max(n.v, n.l): sin(alpha)
     // sin(beta) = sin(theta_i) sin(theta_o) whichever angle is larger. B s / cos(beta) + A
     // and the factor rho / pi are carried in double words from the exact product on and
@@ -219,7 +225,11 @@ impl<T: Real> OrenNayar<T> {
     #[inline]
     #[must_use]
     pub fn eval(&self, wo: V3<T>, wi: V3<T>) -> T {
-        qualitative_kernel(wo.z, wi.z, wo.dot(wi), self.rho, self.a, self.b)
+        super::nan_if_nan_dir(
+            wo,
+            wi,
+            qualitative_kernel(wo.z, wi.z, wo.dot(wi), self.rho, self.a, self.b),
+        )
     }
 }
 
@@ -356,6 +366,12 @@ fn clamp_dw<T: Real>(x: Dw<T>, lo: T, hi: T) -> Dw<T> {
 
 #[inline]
 fn full_kernel<T: Real>(n_dot_v: T, n_dot_l: T, v_dot_l: T, rho: T, k: FullCoefficients<T>) -> T {
+    // Infinite cosines count as +-1 (rules 3 and 5), before s = v.l - n.v n.l forms inf - inf.
+    let (n_dot_v, n_dot_l, v_dot_l) = (
+        unit_if_inf(n_dot_v),
+        unit_if_inf(n_dot_l),
+        unit_if_inf(v_dot_l),
+    );
     // The whole of L1 and L2 is carried in double words and rounded once, at the end: where
     // both directions graze, C3 tan((alpha + beta) / 2) and cos(phi) C2 tan(beta) grow like
     // 1 / cos and are each a product of half a dozen factors (the angles, the sigma factor,
@@ -563,7 +579,11 @@ impl<T: Real> OrenNayarFull<T> {
     #[inline]
     #[must_use]
     pub fn eval(&self, wo: V3<T>, wi: V3<T>) -> T {
-        full_kernel(wo.z, wi.z, wo.dot(wi), self.rho, self.k)
+        super::nan_if_nan_dir(
+            wo,
+            wi,
+            full_kernel(wo.z, wi.z, wo.dot(wi), self.rho, self.k),
+        )
     }
 }
 
@@ -573,6 +593,12 @@ const FUJII_K: (f64, f64) = (0.287_793_409_210_806_2, 1.311_911_778_345_499_2e-1
 
 #[inline]
 fn fujii_kernel<T: Real>(n_dot_v: T, n_dot_l: T, v_dot_l: T, rho: T, sigma: T) -> T {
+    // Infinite cosines count as +-1 (rules 3 and 5), before s = v.l - n.v n.l forms inf - inf.
+    let (n_dot_v, n_dot_l, v_dot_l) = (
+        unit_if_inf(n_dot_v),
+        unit_if_inf(n_dot_l),
+        unit_if_inf(v_dot_l),
+    );
     // rho / pi (t + sigma s) / (1 + K sigma) / t in double words, rounded once before the
     // division by t.
     let (k, tail) = FUJII_K;
@@ -673,6 +699,10 @@ impl<T: Real> OrenNayarFujii<T> {
     #[inline]
     #[must_use]
     pub fn eval(&self, wo: V3<T>, wi: V3<T>) -> T {
-        fujii_kernel(wo.z, wi.z, wo.dot(wi), self.rho, self.sigma)
+        super::nan_if_nan_dir(
+            wo,
+            wi,
+            fujii_kernel(wo.z, wi.z, wo.dot(wi), self.rho, self.sigma),
+        )
     }
 }

@@ -373,8 +373,9 @@ pub fn narkowicz_polynomial<T: Real>(n_dot_v: T, roughness: T) -> [T; 2] {
 /// [`dfg`], [`lookup`] or a fit.
 ///
 /// Domain: prefiltered >= 0 (radiance) and finite; f0 components and f90 in [0, 1]; a, b
-/// finite (a fit may give a B slightly below 0). A negative radiance or f0 / f90 outside
-/// [0, 1] give NaN in every channel (f0's own channel for f0); NaN in any input gives NaN;
+/// finite (a fit may give a B slightly below 0). A negative or infinite radiance or f0 / f90
+/// outside [0, 1] give NaN in every channel (f0's own channel for f0, the radiance's own
+/// channel for the radiance); NaN or an infinite a or b gives NaN (rule 5);
 /// F0 A + F90 B and the result are clamped to [-MAX, MAX] (a negative B can make the result
 /// negative: it is a radiance estimate, not clamped at 0), so finite input gives finite
 /// output.
@@ -387,9 +388,14 @@ pub fn specular<T: Real>(prefiltered: V3<T>, f0: V3<T>, f90: T, a: T, b: T) -> V
     // and a zero radiance would then give 0 * inf = NaN; a fit's B < 0 makes it negative, so
     // the -MAX side matters as much as the +MAX one.
     let cap = |v: T| v.clamp(-T::MAX, T::MAX);
+    // An infinite a, b or radiance would be capped to a plausible +-MAX (rule 5: NaN).
+    let ok = f90_ok & a.is_finite() & b.is_finite();
     prefiltered.zip_map(f0, |l, f| {
         let v = cap(l * cap(f.mul_add(a, fb)));
-        nan_unless(f90_ok & in_unit(f) & l.simd_ge(T::ZERO), v)
+        nan_unless(
+            ok & in_unit(f) & l.simd_ge(T::ZERO) & l.simd_lt(T::INFINITY),
+            v,
+        )
     })
 }
 

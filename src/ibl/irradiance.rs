@@ -35,7 +35,7 @@ use crate::domain::nan_where;
 use crate::frame::Frame;
 use crate::real::Real;
 use crate::vec3::V3;
-use crate::vec3::any_nan3;
+use crate::vec3::any_nonfinite3;
 
 /// Node `k` (descending: k = 0 is the largest) and weight of the `order`-point Gauss-Legendre
 /// rule on [-1, 1], which integrates polynomials of degree <= 2 order - 1 exactly.
@@ -188,7 +188,7 @@ const BAND: [usize; 9] = [0, 1, 1, 1, 2, 2, 2, 2, 2];
 /// Tricks") negate k = 1, 3, 5, 7. z is the axis of the zonal harmonics (Y_1^0, Y_2^0): with
 /// a y-up renderer, pass (x, y, z) permuted or accept that "up" is z here.
 ///
-/// Domain: a unit d (not normalised here). NaN in any component gives NaN in all nine.
+/// Domain: a unit d (not normalised here). A NaN or infinite component gives NaN in all nine.
 #[inline]
 #[must_use]
 pub fn sh9_basis<T: Real>(d: V3<T>) -> [T; 9] {
@@ -205,7 +205,7 @@ pub fn sh9_basis<T: Real>(d: V3<T>) -> [T; 9] {
         c(C2) * x * z,
         c(C4) * (x * x - y * y),
     ];
-    let bad = any_nan3(d);
+    let bad = any_nonfinite3(d);
     y.map(|v| nan_where(bad, v))
 }
 
@@ -329,7 +329,7 @@ impl<T: Real> Sh9<T> {
         let e = l22 * (k[0] * (x * x - y * y)) + l20 * (k[2] * z * z) + l00 * k[3] - l20 * k[4]
             + cross
             + linear;
-        let bad = any_nan3(n);
+        let bad = any_nonfinite3(n);
         V3::new(
             nan_where(bad, e.x),
             nan_where(bad, e.y),

@@ -43,7 +43,7 @@ use crate::microfacet::Microfacet;
 use crate::real::Real;
 use crate::sampling;
 use crate::vec3::V3;
-use crate::vec3::any_nan3;
+use crate::vec3::any_nonfinite3;
 
 /// One prefilter sample in the local frame of the reflection direction r (= +z).
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -91,7 +91,8 @@ pub fn hammersley(i: u32, n: u32) -> (f64, f64) {
 /// Integrates to 1 over the sphere. D is evaluated on the vector h
 /// ([`Microfacet::d`]), not on n.h: near the peak of a
 /// narrow lobe 1 - (n.h)^2 would cancel (in f32, 1e-5 relative error of the pdf at
-/// alpha = 0.05). 0 at dir = -z (h horizontal); NaN for NaN in any input or an alpha outside
+/// alpha = 0.05). 0 at dir = -z (h horizontal) and for the zero vector (no direction); NaN for
+/// NaN in any input, an infinite component of dir or an alpha outside
 /// [0, +inf) finite (alpha clamped to [ALPHA_MIN, ALPHA_MAX] as in [`ggx::d`](crate::ggx::d)).
 #[inline]
 #[must_use]
@@ -99,7 +100,9 @@ pub fn pdf<T: Real>(dir: V3<T>, alpha: T) -> T {
     // dir = -z has no half vector; any horizontal one has D = 0, the limit from most sides.
     let h = V3::new(dir.x, dir.y, T::ONE + dir.z).normalize_or(V3::new(T::ONE, T::ZERO, T::ZERO));
     let d = Ggx::new_unchecked(alpha, alpha).d(h);
-    nan_where(any_nan3(dir), d * T::splat(0.25))
+    // A zero-length dir is no direction: pdf 0 (its h would be +z, the peak).
+    let d = T::select(crate::vec3::is_zero3(dir), T::ZERO, d);
+    nan_where(any_nonfinite3(dir), d * T::splat(0.25))
 }
 
 /// The prefilter sample drawn from the uniform pair (u1, u2): the half vector h from D(h) n.h
@@ -118,7 +121,7 @@ pub fn sample_from<T: Real>(u1: T, u2: T, alpha: T) -> PrefilterSample<T> {
     // D(h) / 4 on the vector h, which never divides by a small cosine (the sampler's own pdf
     // D(h) h.z would need / (4 h.z)), and never forms 1 - h.z^2 (see [`pdf`]).
     let pdf = nan_where(
-        any_nan3(h),
+        any_nonfinite3(h),
         Ggx::new_unchecked(alpha, alpha).d(h) * T::splat(0.25),
     );
     PrefilterSample {
@@ -179,8 +182,9 @@ const LOG2_3_OVER_2PI: f64 = -1.066_533_628_751_162_6;
 /// 3^1.5 = 5.2 times less than at its centre, so the level is about 1.2 too low there.
 ///
 /// Evaluated as log2(w) + 0.5 (log2(3 / (2 pi)) - log2(N) - log2(pdf)) + 1, which never
-/// forms w^2 or N pdf (no overflow for any finite w, N, pdf). Domain: pdf >= 0 (+inf
-/// allowed: level 0), `sample_count` N >= 1 finite, `face_size` w >= 1 finite (texels), all
+/// forms w^2 or N pdf (no overflow for any finite w, N, pdf). Domain: pdf >= 0 finite (a
+/// pdf of `T::MAX` gives level 0; +inf is out of every domain, crate docs "Bad input", rule
+/// 5), `sample_count` N >= 1 finite, `face_size` w >= 1 finite (texels), all
 /// floats so the function runs on lanes; the caller clamps the result to its mip count.
 /// pdf = 0 gives the largest finite value (an infinitely coarse level). NaN for NaN input or
 /// any argument outside its domain.
@@ -192,6 +196,7 @@ pub fn mip_level<T: Real>(pdf: T, sample_count: T, face_size: T) -> T {
         + T::HALF * (T::splat(LOG2_3_OVER_2PI) - log2(sample_count) - log2(pdf))
         + T::ONE;
     let ok = pdf.simd_ge(T::ZERO)
+        & pdf.simd_lt(T::INFINITY)
         & sample_count.simd_ge(T::ONE)
         & sample_count.is_finite()
         & face_size.simd_ge(T::ONE)

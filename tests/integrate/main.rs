@@ -3,6 +3,7 @@
 //! one module. Each module keeps its own feature gate.
 //!
 //! - `accuracy`: documented accuracy on integrands with known integrals
+//! - `bad_input`: NaN and infinite arguments, the configuration included, give a NaN estimate
 //! - `error_estimates`: the reported error bounds the actual error
 //! - `generic`: the `_f32` integrators against the f64 ones
 
@@ -10,5 +11,6 @@
 mod common;
 
 mod accuracy;
+mod bad_input;
 mod error_estimates;
 mod generic;

@@ -5,10 +5,19 @@
 //! - (b) a NaN in each input, one at a time, gives NaN in every output that depends on it
 //!   (for samplers: all three direction components and the pdf);
 //! - (c) each parameter outside its documented domain gives NaN (also below the horizon);
+//! - (e) an infinite cosine or uniform sample (and a tonemap operator's input, which the
+//!   operators clamp to `MAX_INPUT`) gives bit for bit its value at the end it lies beyond
+//!   (rule 3); any other infinite input gives NaN wherever a NaN would (rule 5), except in
+//!   the IEEE-arithmetic helpers of `INFINITY_EXEMPT`;
 //! - (d) on `f32x8` and `f64x4`, a NaN or an invalid parameter in one lane leaves the other
 //!   lanes bit for bit as they were, and those equal the scalar results within 16 ulps
 //!   (`tests/lanes/vs_scalar.rs` holds the per-function lane bounds; this only shows no lane
 //!   leaks into another).
+//!
+//! A zero-length direction is finite input: another test sets each kernel's `wo`, `wi` or
+//! `dir` to (0, 0, 0) on every lane type and requires finite output and, from every sampler
+//! and pdf, pdf 0; a last one holds the microfacet verbs at the zero vector to their horizon
+//! values.
 //!
 //! A second test scans `src/` for `pub fn` and fails when one is neither in the table nor in
 //! the list of non-kernels (constructors, getters, integrators) below, so a new kernel cannot
@@ -44,6 +53,9 @@ use brdf::wide::{f32x8, f64x4};
 use brdf::{Real, V3};
 
 const INF: f64 = f64::INFINITY;
+/// `tonemap::MAX_INPUT`, where an operator's input clamp ends (`tonemap_max_input_matches`
+/// holds the two equal).
+const TONEMAP_MAX_INPUT: f64 = 1e9;
 const NAN: f64 = f64::NAN;
 
 /// One scalar input of a kernel (a cosine, a direction component, a parameter, a sample).
@@ -2101,8 +2113,92 @@ fn lanes<T: Real>(x: T) -> Vec<f64> {
 /// failures per check.
 #[derive(Default, Clone)]
 struct Outcome {
-    fails: [Vec<String>; 4],
-    counts: [usize; 4],
+    fails: [Vec<String>; 5],
+    counts: [usize; 5],
+}
+
+/// Inputs that rule 3 clamps (cosines and uniform samples): an infinity among them counts as
+/// the end it lies beyond, so f(+-inf) = f(+-1) (a sample's -1 is clamped to 0 as -inf is).
+/// Returns the finite inputs that -inf and +inf must equal, or None for an input that rule 5
+/// sends to NaN (directions, colours, parameters, angles, distances, the DFG terms a and b).
+fn clamped(kernel: &str, name: &str) -> Option<[f64; 2]> {
+    if name.contains("_dot_") || name.starts_with("cos_") || matches!(name, "mu" | "u1" | "u2") {
+        return Some([-1.0, 1.0]);
+    }
+    // The tonemap operators document their own input clamp (`tonemap::sanitize`, the module's
+    // "Bad input"): negative and -inf count as 0, above `MAX_INPUT` and +inf as `MAX_INPUT`, so
+    // an operator's f(+inf) is its value at `MAX_INPUT`. Their inputs are the scene colour's
+    // channels (`c`, `x`, `c.x`, ...).
+    let tonemap = kernel.starts_with("tonemap::") || kernel.starts_with("Operator::apply");
+    if tonemap && (name == "x" || name == "c" || name.starts_with("c.")) {
+        return Some([-1.0, TONEMAP_MAX_INPUT]);
+    }
+    None
+}
+
+/// Kernels (and the inputs, by name prefix) that rule 5 exempts: they follow IEEE arithmetic
+/// like the operators they are, so an infinite component gives what the arithmetic gives.
+const INFINITY_EXEMPT: &[(&str, &str, &str)] = &[
+    ("V3::dot", "", "vector arithmetic: the sum of products"),
+    ("V3::cross", "", "vector arithmetic"),
+    (
+        "V3::length_squared",
+        "",
+        "vector arithmetic: +inf is the length of an infinite vector",
+    ),
+    ("V3::length", "", "vector arithmetic"),
+    (
+        "V3::normalize_or",
+        "",
+        "vector arithmetic: the fallback covers only a zero length",
+    ),
+    ("V3::mirror", "", "vector arithmetic: 2 (a.n) n - a"),
+    (
+        "V3::min_element",
+        "",
+        "a component comparison, like f32::min",
+    ),
+    (
+        "V3::max_element",
+        "",
+        "a component comparison, like f32::max",
+    ),
+    (
+        "Frame::to_local",
+        "v.",
+        "three dot products with the frame's axes (the normal is not exempt)",
+    ),
+    (
+        "Frame::to_world",
+        "v.",
+        "a linear combination of the axes (the normal is not exempt)",
+    ),
+    (
+        "ShadingPoint::local",
+        "l.",
+        "Frame::to_local of the point's frame (the normal is not exempt)",
+    ),
+    (
+        "ShadingPoint::world",
+        "w.",
+        "Frame::to_world of the point's frame (the normal is not exempt)",
+    ),
+    (
+        "color::mul",
+        "",
+        "a linear colour helper: one product per channel",
+    ),
+    (
+        "color::luminance",
+        "",
+        "a linear colour helper: a weighted sum of the channels",
+    ),
+];
+
+fn infinity_exempt(kernel: &str, name: &str) -> bool {
+    INFINITY_EXEMPT
+        .iter()
+        .any(|(k, prefix, _)| *k == kernel && name.starts_with(prefix))
 }
 
 fn fmt_out(v: &[f64]) -> String {
@@ -2158,6 +2254,49 @@ fn check<T: Real>(kern: &Kernel<T>, scalar: &Kernel<T::Scalar>, ty: &str) -> Out
             probe(NAN, 1, &mut o);
             for &bad in &a.invalid {
                 probe(bad, 2, &mut o);
+            }
+            // (e) infinities: a clamped input at +-inf equals it at +-1 bit for bit; any other
+            // input at +-inf gives NaN where a NaN would.
+            for (end, sign) in [1.0, -1.0].into_iter().enumerate() {
+                if infinity_exempt(&kern.name, &a.name) {
+                    continue;
+                }
+                // A parameter that rejects out-of-range values (a spot cone's cos_outer) is not
+                // clamped, whatever its name: its infinities give NaN like its other bad values.
+                let ends = if a.invalid.is_empty() {
+                    clamped(&kern.name, &a.name)
+                } else {
+                    None
+                };
+                if let Some(ends) = ends {
+                    let at_inf = |v: f64| {
+                        let mut y = x.clone();
+                        y[j] = T::splat(v);
+                        (kern.f)(&y)
+                            .iter()
+                            .flat_map(|&v| lanes(v))
+                            .collect::<Vec<f64>>()
+                    };
+                    let finite = ends[1 - end];
+                    let (got, want) = (at_inf(sign * INF), at_inf(finite));
+                    o.counts[4] += 1;
+                    let same = got
+                        .iter()
+                        .zip(&want)
+                        .all(|(g, w)| g.to_bits() == w.to_bits() || (g.is_nan() && w.is_nan()));
+                    if !same {
+                        o.fails[4].push(format!(
+                            "{ty} {} = {}{at} gave {}, at {} {}",
+                            a.name,
+                            sign * INF,
+                            fmt_out(&got),
+                            finite,
+                            fmt_out(&want)
+                        ));
+                    }
+                } else {
+                    probe(sign * INF, 4, &mut o);
+                }
             }
         }
         // (d) lanes: one bad lane leaves the others as they were; those equal the scalars.
@@ -2229,17 +2368,17 @@ fn every_kernel_keeps_the_bad_input_rule_on_every_lane_type() {
         run::<f32x8>("f32x8"),
         run::<f64x4>("f64x4"),
     ];
-    let names = ["a finite", "b NaN", "c invalid", "d lanes"];
+    let names = ["a finite", "b NaN", "c invalid", "d lanes", "e infinity"];
     println!(
-        "{:<48} {:>4}  {:>12} {:>12} {:>12} {:>12}",
-        "kernel", "args", names[0], names[1], names[2], names[3]
+        "{:<48} {:>4}  {:>12} {:>12} {:>12} {:>12} {:>12}",
+        "kernel", "args", names[0], names[1], names[2], names[3], names[4]
     );
     let mut failures = Vec::new();
-    let mut totals = [0usize; 4];
-    let mut failed_kernels = [0usize; 4];
+    let mut totals = [0usize; 5];
+    let mut failed_kernels = [0usize; 5];
     for (i, (name, n_args, _)) in results[0].iter().enumerate() {
         let mut cells = Vec::new();
-        for chk in 0..4 {
+        for chk in 0..5 {
             let (mut n, mut f) = (0, 0);
             for r in &results {
                 n += r[i].2.counts[chk];
@@ -2261,8 +2400,8 @@ fn every_kernel_keeps_the_bad_input_rule_on_every_lane_type() {
             });
         }
         println!(
-            "{name:<48} {n_args:>4}  {:>12} {:>12} {:>12} {:>12}",
-            cells[0], cells[1], cells[2], cells[3]
+            "{name:<48} {n_args:>4}  {:>12} {:>12} {:>12} {:>12} {:>12}",
+            cells[0], cells[1], cells[2], cells[3], cells[4]
         );
     }
     println!(
@@ -2617,4 +2756,140 @@ fn every_public_function_is_in_the_table_or_named_as_not_a_kernel() {
         missing.is_empty(),
         "public functions neither in the table nor exempt: {missing:?}"
     );
+}
+
+#[cfg(feature = "tonemap")]
+#[test]
+fn tonemap_max_input_matches() {
+    assert_eq!(TONEMAP_MAX_INPUT, brdf::tonemap::MAX_INPUT);
+}
+
+// ---------------------------------------------------------------------------------------
+// Degenerate directions: a zero-length wo or wi is finite input, so it gives finite output
+// (never NaN), and every sampler and pdf documents its pdf there: 0.
+
+/// Kernels that return a pdf, and which output holds it.
+fn pdf_output(name: &str) -> Option<usize> {
+    let sampler = name.contains("sample")
+        || name.contains("vndf")
+        || name.contains("_reflection")
+        || name.contains("d_cos(");
+    if name.contains("pdf") {
+        Some(0)
+    } else if sampler && !name.contains("sample_from") && !name.contains("prefilter::sample") {
+        Some(3)
+    } else {
+        None
+    }
+}
+
+fn zero_direction_sweep<T: Real>(ty: &str, failures: &mut Vec<String>, probes: &mut usize) {
+    for kern in table::<T>() {
+        for dir in ["wo", "wi", "dir"] {
+            let idx: Vec<usize> = (0..kern.args.len())
+                .filter(|&i| kern.args[i].name.starts_with(&format!("{dir}.")))
+                .collect();
+            if idx.len() != 3 {
+                continue;
+            }
+            let mut x: Vec<f64> = kern.args.iter().map(|a| a.valid).collect();
+            for &i in &idx {
+                x[i] = 0.0;
+            }
+            let out = (kern.f)(&splat_all::<T>(&x));
+            *probes += 1;
+            let flat: Vec<f64> = out.iter().flat_map(|&y| lanes(y)).collect();
+            let pdf_ok =
+                pdf_output(&kern.name).is_none_or(|p| lanes(out[p]).iter().all(|&v| v == 0.0));
+            if !flat.iter().all(|y| y.is_finite()) || !pdf_ok {
+                failures.push(format!(
+                    "{} {ty} {dir} = (0, 0, 0) gave {}",
+                    kern.name,
+                    fmt_out(&flat)
+                ));
+            }
+        }
+    }
+}
+
+#[test]
+fn a_zero_length_direction_gives_finite_output_and_a_zero_pdf() {
+    let (mut failures, mut probes) = (Vec::new(), 0);
+    zero_direction_sweep::<f32>("f32", &mut failures, &mut probes);
+    zero_direction_sweep::<f64>("f64", &mut failures, &mut probes);
+    zero_direction_sweep::<f32x8>("f32x8", &mut failures, &mut probes);
+    zero_direction_sweep::<f64x4>("f64x4", &mut failures, &mut probes);
+    println!("{probes} zero-direction probes");
+    for f in &failures {
+        println!("FAIL {f}");
+    }
+    assert!(
+        failures.is_empty(),
+        "{} of {probes} zero-direction probes break the rule",
+        failures.len()
+    );
+}
+
+/// The microfacet verbs of one distribution at the zero vector: the horizon's values.
+#[cfg(all(feature = "ggx", feature = "beckmann"))]
+fn zero_vector_is_the_horizon_for<T: Real, M: brdf::microfacet::Microfacet<T>>(dist: &M) {
+    let zero = V3::splat(T::ZERO);
+    let horizon = V3::new(T::ONE, T::ZERO, T::ZERO);
+    let up = V3::new(T::ZERO, T::splat(0.6), T::splat(0.8));
+    let same = |a: T, b: T, what: &str| {
+        for i in 0..T::LANES {
+            let (a, b): (f64, f64) = (a.lane(i).into(), b.lane(i).into());
+            assert!(
+                a.is_finite() && a.to_bits() == b.to_bits(),
+                "{what}: {a} vs {b}"
+            );
+        }
+    };
+    same(dist.g1(zero), dist.g1(horizon), "g1");
+    same(dist.lambda(zero), dist.lambda(horizon), "lambda");
+    same(
+        dist.cos_lambda(zero),
+        dist.cos_lambda(horizon),
+        "cos_lambda",
+    );
+    same(
+        dist.g2_correlated(zero, up),
+        dist.g2_correlated(horizon, up),
+        "g2_correlated",
+    );
+    same(
+        dist.g2_separable(zero, up),
+        dist.g2_separable(horizon, up),
+        "g2_separable",
+    );
+    same(
+        dist.g2_correlated(up, zero),
+        dist.g2_correlated(up, horizon),
+        "g2_correlated wi",
+    );
+    same(
+        dist.v_correlated(zero, up),
+        dist.v_correlated(horizon, up),
+        "v_correlated",
+    );
+    same(
+        dist.v_correlated(up, zero),
+        dist.v_correlated(up, horizon),
+        "v_correlated wi",
+    );
+    same(dist.d_visible(zero, up), T::ZERO, "d_visible");
+}
+
+#[cfg(all(feature = "ggx", feature = "beckmann"))]
+#[test]
+fn a_zero_vector_takes_the_horizon_values_of_every_microfacet_verb() {
+    fn all<T: Real>() {
+        let a = T::splat(0.3);
+        zero_vector_is_the_horizon_for(&brdf::ggx::Ggx::new(a, a).unwrap());
+        zero_vector_is_the_horizon_for(&brdf::beckmann::Beckmann::new(a, a).unwrap());
+    }
+    all::<f32>();
+    all::<f64>();
+    all::<f32x8>();
+    all::<f64x4>();
 }

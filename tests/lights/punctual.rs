@@ -1,7 +1,8 @@
 //! Punctual lights: the two strength conventions agree, the inverse square law and the cosine
 //! law match a small spherical emitter integrated over the hemisphere, each falloff has its
-//! documented value at its edges (distance 0 and +inf, radius 0 and +inf) and never NaN there,
-//! bad input gives NaN, and lanes reproduce scalars.
+//! documented value at its edges (distance 0 and MAX, radius 0 and MAX) and never NaN there,
+//! bad input gives NaN (an infinite distance or radius included: crate docs, "Bad input",
+//! rule 5), and lanes reproduce scalars.
 #![cfg(all(feature = "lights", feature = "integrate"))]
 
 use crate::common;
@@ -104,7 +105,7 @@ fn inverse_square_and_cosine_laws_match_a_small_spherical_emitter() {
 }
 
 #[test]
-fn inverse_square_is_clamped_at_its_minimum_distance_and_vanishes_at_infinity() {
+fn inverse_square_is_clamped_at_its_minimum_distance_and_vanishes_far_away() {
     assert_eq!(
         lights::inverse_square(0.0, 0.01),
         1e4_f64.next_up().min(1.0 / (0.01 * 0.01))
@@ -114,9 +115,11 @@ fn inverse_square_is_clamped_at_its_minimum_distance_and_vanishes_at_infinity() 
         lights::inverse_square(0.01, 0.01)
     );
     assert_eq!(lights::inverse_square(2.0, 0.01), 0.25);
-    assert_eq!(lights::inverse_square(f64::INFINITY, 0.01), 0.0);
-    assert_eq!(lights::inverse_square(f32::INFINITY, 0.01), 0.0);
     assert_eq!(lights::inverse_square(f64::MAX, 0.01), 0.0);
+    assert_eq!(lights::inverse_square(f32::MAX, 0.01), 0.0);
+    // An infinite distance is an overflow upstream (crate docs, "Bad input", rule 5).
+    assert!(lights::inverse_square(f64::INFINITY, 0.01).is_nan());
+    assert!(lights::inverse_square(f32::INFINITY, 0.01).is_nan());
 }
 
 /// An independent f64 evaluation of Karis's window, written from the formula.
@@ -133,15 +136,15 @@ fn windowed_falloff_has_its_documented_edges() {
     assert_eq!(w(7.0, 5.0), 0.0);
     assert_eq!(w(0.0, 0.0), 0.0, "radius 0 lights nothing, also at d = 0");
     assert_eq!(w(1.0, 0.0), 0.0);
-    assert_eq!(
-        w(3.0, f64::INFINITY),
-        1.0 / 10.0,
-        "no window at infinite radius"
-    );
-    assert_eq!(w(f64::INFINITY, 5.0), 0.0);
-    assert_eq!(w(f64::INFINITY, f64::INFINITY), 0.0);
+    assert_eq!(w(3.0, f64::MAX), 1.0 / 10.0, "no window at radius MAX");
+    assert_eq!(w(f64::MAX, 5.0), 0.0);
     assert_eq!(w(f64::MAX, f64::MAX), 0.0);
-    assert_eq!(lights::windowed::<f32>(f32::MAX, f32::INFINITY), 0.0);
+    assert_eq!(lights::windowed::<f32>(f32::MAX, f32::MAX), 0.0);
+    // Infinite distances and radii are out of the domain (rule 5).
+    assert!(w(3.0, f64::INFINITY).is_nan());
+    assert!(w(f64::INFINITY, 5.0).is_nan());
+    assert!(w(f64::INFINITY, f64::INFINITY).is_nan());
+    assert!(lights::windowed::<f32>(f32::MAX, f32::INFINITY).is_nan());
     // Matches the formula in the interior and is non-increasing in d.
     let mut prev = f64::INFINITY;
     for i in 0..=1000 {
@@ -168,14 +171,16 @@ fn windowed_inverse_square_is_window_times_the_inverse_square() {
         );
     }
     assert_eq!(
-        lights::windowed_inverse_square(3.0, f64::INFINITY, 0.01),
+        lights::windowed_inverse_square(3.0, f64::MAX, 0.01),
         1.0 / 9.0
     );
     assert_eq!(lights::windowed_inverse_square(3.0, 0.0, 0.01), 0.0);
     assert_eq!(
-        lights::windowed_inverse_square(f64::INFINITY, f64::INFINITY, 0.01),
+        lights::windowed_inverse_square(f64::MAX, f64::MAX, 0.01),
         0.0
     );
+    assert!(lights::windowed_inverse_square(3.0, f64::INFINITY, 0.01).is_nan());
+    assert!(lights::windowed_inverse_square(f64::INFINITY, f64::INFINITY, 0.01).is_nan());
 }
 
 #[test]
@@ -184,14 +189,12 @@ fn polynomial_attenuation_has_its_documented_edges() {
     assert_eq!(p(0.0, 2.0, 1.0, 1.0), 0.5);
     assert_eq!(p(3.0, 1.0, 0.0, 1.0), 0.1);
     assert_eq!(p(3.0, 1.0, 2.0, 0.5), 1.0 / (1.0 + 6.0 + 4.5));
-    assert_eq!(p(f64::INFINITY, 1.0, 0.5, 0.0), 0.0);
-    assert_eq!(
-        p(f64::INFINITY, 2.0, 0.0, 0.0),
-        0.5,
-        "constant only: no 0 x inf"
-    );
+    assert!(p(f64::MAX, 1.0, 0.5, 0.0) <= 2.0 / f64::MAX);
+    assert_eq!(p(f64::MAX, 2.0, 0.0, 0.0), 0.5, "constant only: no 0 x inf");
     assert_eq!(p(f64::MAX, 1.0, 0.0, 1.0), 0.0);
-    assert_eq!(lights::polynomial::<f32>(f32::INFINITY, 1.0, 0.0, 0.0), 1.0);
+    assert_eq!(lights::polynomial::<f32>(f32::MAX, 1.0, 0.0, 0.0), 1.0);
+    assert!(p(f64::INFINITY, 1.0, 0.5, 0.0).is_nan());
+    assert!(p(f64::INFINITY, 2.0, 0.0, 0.0).is_nan());
 }
 
 #[test]
@@ -235,7 +238,9 @@ fn constructors_reject_parameters_outside_their_domain() {
     assert!(Attenuation::inverse_square(f64::NAN).is_err());
     assert!(Attenuation::windowed(-1.0_f64).is_err());
     assert!(Attenuation::windowed(f64::NAN).is_err());
-    assert!(Attenuation::windowed(f64::INFINITY).is_ok());
+    assert!(Attenuation::windowed(f64::MAX).is_ok());
+    assert!(Attenuation::windowed(f64::INFINITY).is_err());
+    assert!(Attenuation::windowed_inverse_square(f64::INFINITY, 0.01).is_err());
     assert!(Attenuation::windowed_inverse_square(1.0_f64, 0.0).is_err());
     assert!(Attenuation::polynomial(0.0_f64, 1.0, 1.0).is_err());
     assert!(Attenuation::polynomial(1.0_f64, -1.0, 1.0).is_err());
@@ -340,6 +345,18 @@ fn parameters_outside_the_domain_give_nan() {
     nan(lights::radiance(1.0, f64::INFINITY, 0.5));
     nan(lights::radiance(1.0, 1.0, 5.0));
     nan(lights::spot_cone(0.5, -1.5, 0.8));
+    // Rule 5: infinite distances and radii give NaN; an infinite cosine counts as +-1.
+    nan(lights::inverse_square(f64::INFINITY, 0.01));
+    nan(lights::windowed(f64::INFINITY, 1.0));
+    nan(lights::windowed(1.0, f64::INFINITY));
+    nan(lights::polynomial(f64::INFINITY, 1.0, 0.0, 0.0));
+    assert_eq!(
+        lights::radiance(1.0, 1.0, f64::INFINITY),
+        lights::radiance(1.0, 1.0, 1.0)
+    );
+    assert_eq!(lights::radiance(1.0, 1.0, f64::NEG_INFINITY), 0.0);
+    assert_eq!(lights::spot_cone(f64::INFINITY, 0.5, 0.9), 1.0);
+    assert_eq!(lights::spot_cone(f64::NEG_INFINITY, 0.5, 0.9), 0.0);
 }
 
 #[test]
@@ -348,8 +365,8 @@ fn lanes_equal_scalars() {
         VALID,
         [0.0, 0.0, 0.0, 0.0],
         [1.0, 1e-3, 1.0, 1.0],
-        [f64::INFINITY, 3.0, -0.5, 0.0],
-        [2.5, f64::INFINITY, 0.95, 2.0],
+        [1e30, 3.0, -0.5, 0.0],
+        [2.5, 1e30, 0.95, 2.0],
         [1e30, 1e-3, 0.25, 1e-3],
         [0.3, 0.3, 0.3, 0.3],
         [5.0, 4.0, 1.0, 0.5],
@@ -380,7 +397,16 @@ fn lanes_equal_scalars() {
     }
     // Mixed lanes: each lane equals the scalar of its own inputs.
     let d = f32x8::from([0.0, 0.5, 1.0, 2.0, 4.0, 8.0, f32::INFINITY, 1e30]);
-    let r = f32x8::from([1.0, 0.0, 3.0, f32::INFINITY, 4.0, 9.0, f32::INFINITY, 1e31]);
+    let r = f32x8::from([
+        1.0,
+        0.0,
+        3.0,
+        f32::MAX,
+        4.0,
+        9.0,
+        f32::INFINITY,
+        f32::INFINITY,
+    ]);
     let v = lights::windowed(d, r);
     for l in 0..8 {
         assert_eq!(
@@ -393,11 +419,11 @@ fn lanes_equal_scalars() {
 proptest! {
     #![proptest_config(common::proptest_config())]
     /// Finite and non-negative over each documented domain, including distances and radii
-    /// up to the largest float and +inf.
+    /// up to the largest float.
     #[test]
     fn falloffs_are_finite_and_non_negative_over_their_domains(
-        d in prop_oneof![0.0f64..10.0, 0.0f64..f64::MAX, Just(f64::INFINITY), Just(0.0)],
-        r in prop_oneof![0.0f64..10.0, 0.0f64..f64::MAX, Just(f64::INFINITY), Just(0.0)],
+        d in prop_oneof![0.0f64..10.0, 0.0f64..f64::MAX, Just(f64::MAX), Just(0.0)],
+        r in prop_oneof![0.0f64..10.0, 0.0f64..f64::MAX, Just(f64::MAX), Just(0.0)],
         dmin in prop_oneof![1e-3f64..1.0, Just(f64::MAX)],
         k in prop::array::uniform3(0.0f64..1e3),
         cos in -1.0f64..=1.0, lo in -1.0f64..=1.0, hi in -1.0f64..=1.0,
@@ -411,7 +437,8 @@ proptest! {
             lights::polynomial(d, constant, k[1], k[2]),
             lights::spot_cone(cos, outer, inner),
         ];
-        let (d32, r32) = (d as f32, r as f32);
+        // Rounded to f32 and kept in its finite range (`as` rounds beyond it to +inf).
+        let (d32, r32) = ((d as f32).min(f32::MAX), (r as f32).min(f32::MAX));
         for v in [
             lights::inverse_square(d32, (dmin as f32).min(f32::MAX)),
             lights::windowed(d32, r32),
@@ -482,14 +509,13 @@ fn in_range<T: Real>(name: &str, x: T, hi: f64, args: &[T]) {
 }
 
 /// Every light function over the whole of its documented domain (finite parameters up to
-/// `T::MAX`, distances also +inf, cosines in [-1, 1] including +-0 and subnormals): finite and
+/// `T::MAX`, cosines in [-1, 1] including +-0 and subnormals): finite and
 /// in its documented range, never inf or NaN.
 fn whole_domain<T: Real>() -> usize {
     let max: f64 = T::MAX.lane(0).into();
     let mags = magnitudes::<T>();
     let cosines = unit_cosines::<T>();
-    let mut distances = mags.clone();
-    distances.push(T::INFINITY);
+    let distances = mags.clone();
     let mut n = 0;
     for &a in &mags {
         for &b in &mags {

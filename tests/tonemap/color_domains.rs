@@ -288,10 +288,19 @@ fn nan_is_reported_and_negative_input_is_clamped_on_every_lane_type() {
             assert!(all_nan(gamma_decode(T::splat(0.5), T::splat(g))));
         }
         assert!(all_nan(color::luminance(V3::new(T::ONE, nan, T::ONE))));
-        for x in [-1.0, -0.0, -1e-30, f64::NEG_INFINITY] {
+        for x in [-1.0, -0.0, -1e-30, -1e30] {
             let x = T::splat(x);
             assert!(all_zero(srgb_oetf(x)) && all_zero(srgb_eotf(x)) && all_zero(rec709_oetf(x)));
             assert!(all_zero(gamma_encode(x, T::splat(2.2))));
+        }
+        // Infinities are not in the domain (crate docs, "Bad input", rule 5): NaN, not black
+        // or +inf.
+        for x in [f64::NEG_INFINITY, f64::INFINITY] {
+            let x = T::splat(x);
+            assert!(all_nan(srgb_oetf(x)) && all_nan(srgb_eotf(x)) && all_nan(rec709_oetf(x)));
+            assert!(all_nan(color::srgb_oetf_fast(x)));
+            assert!(all_nan(gamma_encode(x, T::splat(2.2))));
+            assert!(all_nan(gamma_decode(x, T::splat(2.2))));
         }
         // Finite input never overflows to inf: results beyond the type are capped at MAX.
         for x in [T::MAX, T::splat(1e30)] {

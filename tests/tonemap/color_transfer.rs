@@ -73,11 +73,17 @@ fn bad_input_gives_black_on_scalars_and_lanes() {
     assert!(srgb_oetf(f32::NAN).is_nan() && srgb_eotf(f32::NAN).is_nan());
     assert!(color::rec709_oetf(f32::NAN).is_nan());
     assert!(srgb_oetf(f32x8::splat(f32::NAN)).lane(3).is_nan());
-    for x in [-1.0, -0.0, f32::NEG_INFINITY] {
+    for x in [-1.0, -0.0, -f32::MAX] {
         assert_eq!(srgb_oetf(x), 0.0);
         assert_eq!(srgb_eotf(x), 0.0);
         assert_eq!(color::rec709_oetf(x), 0.0);
         assert_eq!(srgb_oetf(f32x8::splat(x)).lane(3), 0.0);
+    }
+    // An infinite signal is an overflow upstream: reported, not clamped (rule 5).
+    for x in [f32::NEG_INFINITY, f32::INFINITY] {
+        assert!(srgb_oetf(x).is_nan() && srgb_eotf(x).is_nan());
+        assert!(color::rec709_oetf(x).is_nan());
+        assert!(srgb_oetf(f32x8::splat(x)).lane(3).is_nan());
     }
     for i in 0..=1000 {
         let x = i as f32 / 1000.0;
