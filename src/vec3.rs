@@ -297,6 +297,37 @@ impl<T: Real> V3<T> {
         self.length_squared().sqrt()
     }
 
+    /// The unit vector `self / |self|` for any finite non-zero `self`, from subnormal components
+    /// to the largest finite ones: the vector is first divided by its largest component
+    /// magnitude m = max(|x|, |y|, |z|) (exact for m a power of two, one rounding otherwise),
+    /// so |self|^2 can neither overflow nor underflow (`normalize_or` forms it directly, and
+    /// takes its fallback where it overflows, above about 1.8e19 in `f32`). Five roundings,
+    /// each at most 2^-24 (2^-53) relative, bound each component's error by 5 ULP of its own
+    /// binade and 2.5 eps absolute; measured: 2.7 ULP and 1.2 eps over 4e5 `f32` vectors across
+    /// the whole exponent range (`cargo test --test lanes vec3_ergonomics::normalize --
+    /// --nocapture`).
+    ///
+    /// The zero vector has no direction and gives the zero vector (finite input, finite
+    /// output); a NaN component gives NaN in all three, and so does an infinite one (inf / inf,
+    /// as IEEE arithmetic has it: `V3`'s helpers are arithmetic, not kernels).
+    ///
+    /// ```
+    /// use brdf::V3;
+    /// let huge = 2f32.powi(100); // |v|^2 = 25 * 2^200 overflows f32
+    /// let v = V3::new(3.0 * huge, 4.0 * huge, 0.0);
+    /// assert_eq!(v.normalize(), V3::new(0.6, 0.8, 0.0));
+    /// assert_eq!(v.normalize_or(V3::unit_z()), V3::unit_z()); // normalize_or's fallback
+    /// assert_eq!(V3::new(0.0_f32, 0.0, 0.0).normalize(), V3::splat(0.0));
+    /// ```
+    #[inline]
+    #[must_use]
+    pub fn normalize(self) -> Self {
+        let m = self.abs().max_element();
+        let s = self / m;
+        let u = s / s.length();
+        Self::select(m.simd_eq(T::ZERO), Self::splat(T::ZERO), u)
+    }
+
     /// `self / |self|`; where `|self|` is 0 or infinite the lane is `fallback`, so a degenerate
     /// half vector (wo = -wi) cannot poison a kernel with a 0 / 0. A NaN component gives NaN in
     /// all three (the crate's rule: a NaN input is never replaced by a plausible direction).

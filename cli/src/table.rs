@@ -975,6 +975,13 @@ pub static KERNELS: &[Kernel] = &[
         o3(v3(self_x, self_y, self_z).normalize_or(v3(fallback_x, fallback_y, fallback_z)))
     ),
     kernel!(
+        "vec3::V3::normalize",
+        "v / |v| through v / max|v_i| (no overflow or underflow); the zero vector for v = 0",
+        [self_x: COMPONENT, self_y: COMPONENT, self_z: COMPONENT]
+            -> [out_x: Domain::DIR, out_y: Domain::DIR, out_z: Domain::DIR],
+        o3(v3(self_x, self_y, self_z).normalize())
+    ),
+    kernel!(
         "vec3::V3::mirror",
         "Mirror 2 (v.n) n - v of v about the unit normal n (pbrt-v4 Reflect, not GLSL reflect)",
         [self_x: Domain::DIR, self_y: Domain::DIR, self_z: Domain::DIR,

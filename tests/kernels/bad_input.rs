@@ -695,6 +695,9 @@ fn frame_rows<T: Real>(t: &mut Vec<Kernel<T>>) {
     t.push(k("V3::normalize_or", vec![v("a", [0.3, -1.2, 2.0])], |x| {
         o3(v3(x, 0).normalize_or(V3::unit_z()))
     }));
+    t.push(k("V3::normalize", vec![v("a", [0.3, -1.2, 2.0])], |x| {
+        o3(v3(x, 0).normalize())
+    }));
     t.push(k("V3::mirror", vec![v("a", WO), v("n", M)], |x| {
         o3(v3(x, 0).mirror(v3(x, 3)))
     }));
@@ -2147,6 +2150,11 @@ const INFINITY_EXEMPT: &[(&str, &str, &str)] = &[
         "vector arithmetic: +inf is the length of an infinite vector",
     ),
     ("V3::length", "", "vector arithmetic"),
+    (
+        "V3::normalize",
+        "",
+        "vector arithmetic: inf / inf is NaN, as IEEE has it",
+    ),
     (
         "V3::normalize_or",
         "",

@@ -341,3 +341,62 @@ fn from_f64_is_real_splat_and_wides_splat_of_the_rounded_value() {
         assert_eq!(f64::from_f64(x).to_bits(), x.to_bits());
     }
 }
+
+/// `V3::normalize` against the f64 unit vector of the same f32 components, over magnitudes
+/// from the subnormals to the largest finite f32 (where `normalize_or` falls back): the
+/// largest error of a component in ULPs of its own binade (components above 1e-6) and in
+/// eps absolute.
+#[test]
+fn normalize_is_accurate_from_subnormal_to_max() {
+    let mut state = 0x1234_5678_9abc_def0_u64;
+    let mut unit = || {
+        state = state
+            .wrapping_mul(6_364_136_223_846_793_005)
+            .wrapping_add(1_442_695_040_888_963_407);
+        (state >> 11) as f64 / (1u64 << 53) as f64
+    };
+    let (mut worst_ulp, mut worst_abs) = (0.0f64, 0.0f64);
+    for i in 0..400_000 {
+        // A random direction scaled by 2^e, e across the whole f32 range.
+        let e = -149.0 + 277.0 * unit();
+        let d = [unit() - 0.5, unit() - 0.5, unit() - 0.5];
+        let scale = 2f64.powf(e);
+        let v = V3::new(
+            (d[0] * scale) as f32,
+            (d[1] * scale) as f32,
+            (d[2] * scale) as f32,
+        );
+        if !(v.x.is_finite() && v.y.is_finite() && v.z.is_finite()) {
+            continue;
+        }
+        let n = v.normalize();
+        let w = [f64::from(v.x), f64::from(v.y), f64::from(v.z)];
+        let len = (w[0] * w[0] + w[1] * w[1] + w[2] * w[2]).sqrt();
+        if len == 0.0 {
+            assert_eq!(n, V3::splat(0.0), "zero at {i}");
+            continue;
+        }
+        for (got, x) in [n.x, n.y, n.z].into_iter().zip(w) {
+            let exact = x / len;
+            let abs = (f64::from(got) - exact).abs();
+            worst_abs = worst_abs.max(abs / f64::from(f32::EPSILON));
+            if exact.abs() > 1e-6 {
+                let ulp = f64::from(f32::EPSILON) * 2f64.powi(exact.abs().log2().floor() as i32);
+                worst_ulp = worst_ulp.max(abs / ulp);
+            }
+        }
+    }
+    println!("V3::normalize f32: max {worst_ulp:.2} ULP (own binade), {worst_abs:.2} eps absolute");
+    // The bound of the error analysis in the method's docs: five roundings of 2^-24.
+    assert!(
+        worst_ulp <= 5.0 && worst_abs <= 2.5,
+        "{worst_ulp} ULP, {worst_abs} eps"
+    );
+    // Where normalize_or gives up (|v|^2 overflows or underflows), normalize does not.
+    let big = V3::new(3.0 * 2f32.powi(100), -4.0 * 2f32.powi(100), 0.0);
+    assert_eq!(big.normalize(), V3::new(0.6, -0.8, 0.0));
+    let tiny = V3::new(3.0e-44_f32, 4.0e-44, 0.0);
+    assert!((tiny.normalize().length() - 1.0).abs() < 1e-6);
+    assert!(V3::new(f32::NAN, 0.0, 1.0).normalize().x.is_nan());
+    assert!(V3::new(f32::INFINITY, 0.0, 1.0).normalize().x.is_nan());
+}

@@ -141,6 +141,7 @@ pub fn direct<T: Scalar>(path: &str, a: &[T]) -> Option<Vec<T>> {
         "vec3::V3::cross" => three(v(a, 0).cross(v(a, 3))),
         "vec3::V3::length_squared" => vec![v(a, 0).length_squared()],
         "vec3::V3::length" => vec![v(a, 0).length()],
+        "vec3::V3::normalize" => three(v(a, 0).normalize()),
         "vec3::V3::normalize_or" => three(v(a, 0).normalize_or(v(a, 3))),
         "vec3::V3::mirror" => three(v(a, 0).mirror(v(a, 3))),
         "vec3::V3::min" => three(v(a, 0).min(v(a, 3))),
