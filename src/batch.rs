@@ -31,7 +31,7 @@
 //! reload them after every store to an output (it cannot prove that the output slices, which
 //! reach the loop inside an array, do not alias them) and redo for every group the work that
 //! depends on them alone: a rough conductor with constant alpha, eta and k took 1.3x as long
-//! borrowed as moved (`benches/throughput.rs`'s timing mode, rows `rough_conductor_fast` and
+//! borrowed as moved (`bench/benches/throughput.rs`'s timing mode, rows `rough_conductor_fast` and
 //! `rough_conductor_fast_borrowed`, native build). The loop itself has no bounds check, so
 //! that work is hoisted out of it once the parameters are values.
 //!

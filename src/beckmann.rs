@@ -567,7 +567,7 @@ pub fn d<T: Real>(n_dot_h: T, alpha: T) -> T {
 ///
 /// Run time (native build, one core, 10^7 uniform cosines through
 /// [`crate::batch::run_f32`]): 1.7x a copy of the same bytes, 0.14x [`d`], 0.74x Mitsuba 3's
-/// `eval` on the same batch (`benches/mitsuba/compare.py`).
+/// `eval` on the same batch (`bench/mitsuba/compare.py`).
 #[inline]
 #[must_use]
 pub fn d_fast<T: Real>(n_dot_h: T, alpha: T) -> T {

@@ -338,7 +338,7 @@ pub fn erf_inv<T: Real>(y: T) -> T {
 /// matches 1 - u1 only to about an eps: relative, 1.4e-2 for 1 - u1 in (1e-5, 1e-4] and 0.14
 /// in (1e-6, 1e-5] in f32, up to 2.5 at 2^-24; 1.6e-3 in (1e-13, 1e-12] in f64, up to 2.2 at
 /// 2^-53. The sampled density departs from the pdf only on that last eps of probability.
-/// Cost: 1.8 us a sample in f32 scalar against 1.5 us before these fixes (`cargo bench
+/// Cost: 1.8 us a sample in f32 scalar against 1.5 us before these fixes (`cargo bench -p brdf-bench
 /// --bench sampling -- "beckmann vndf"`, a shared 2-core machine), mostly the erfc and ln of
 /// erf^-1's tail polish, which every step needs (polishing only the last steps left f64 at 9
 /// times the bound).

@@ -51,7 +51,7 @@ pub fn dfg_section() {
          samples per entry); max |error| (RMS), over all cells and over NoV >= 0.25. The fits \
          were made for other models (UE4's LUT uses the separable Schlick-Smith G, Lazarov a \
          Blinn-Phong lobe), which is most of their error. Run time against the table lookup: \
-         `cargo bench --bench ibl`.\n"
+         `cargo bench -p brdf-bench --bench ibl`.\n"
     );
     outln!("| fit | A | B | A, NoV >= 0.25 | B, NoV >= 0.25 |");
     outln!("|---|---|---|---|---|");

@@ -1,5 +1,5 @@
 //! Question answered: what does each tonemapping operator cost per pixel, on f32 and on f32x8
-//! lanes? Run: `cargo bench --bench tonemap`. Ratios between rows of one run are the figures
+//! lanes? Run: `cargo bench -p brdf-bench --bench tonemap`. Ratios between rows of one run are the figures
 //! to quote (the machine is shared).
 
 use brdf::tonemap::Operator;

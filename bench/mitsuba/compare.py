@@ -2,7 +2,7 @@
 """Question answered: how long do brdf's f32x8 kernels take against Mitsuba 3's LLVM JIT on
 the same batch of directions, on one core, in the same run?
 
-Run (setup in README.md, beside this file): `python3 benches/mitsuba/compare.py` from the
+Run (setup in README.md, beside this file): `python3 bench/mitsuba/compare.py` from the
 repository root. It
 
 1. writes N (default 10^7) random view and light directions, uniform on the upper hemisphere
@@ -97,7 +97,7 @@ def build_brdf(repo, target_dir):
     env = dict(os.environ)
     env["RUSTFLAGS"] = (env.get("RUSTFLAGS", "") + " -C target-cpu=native").strip()
     env["CARGO_TARGET_DIR"] = target_dir
-    cmd = ["cargo", "bench", "--bench", "throughput", "--no-run", "--message-format=json"]
+    cmd = ["cargo", "bench", "-p", "brdf-bench", "--bench", "throughput", "--no-run", "--message-format=json"]
     out = subprocess.run(cmd, cwd=repo, env=env, check=True, capture_output=True, text=True)
     for line in out.stdout.splitlines():
         msg = json.loads(line)

@@ -2,7 +2,7 @@
 //! `f32`, and what do the lane transcendentals cost (the `wide` polynomials against the
 //! per-lane `libm` fallbacks)?
 //!
-//! Run: `cargo bench --bench lanes`. Compare the `elem/s` of the `scalar` and `f32x8` rows of
+//! Run: `cargo bench -p brdf-bench --bench lanes`. Compare the `elem/s` of the `scalar` and `f32x8` rows of
 //! one group: their ratio is the SIMD speed-up on this machine (without `-C target-cpu`, x86-64
 //! lanes are two SSE halves; with AVX2 they are one register).
 

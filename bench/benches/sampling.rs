@@ -1,7 +1,7 @@
 //! Question answered: which visible-normal sampler should a renderer use? Times Heitz 2018's
 //! GGX VNDF sampler against Dupuy and Benyoub 2023's spherical caps (same distribution), the
 //! classic D cos sampling, and the Beckmann VNDF sampler, on f32 and f32x8, each including its
-//! pdf. Run: `cargo bench --bench sampling`.
+//! pdf. Run: `cargo bench -p brdf-bench --bench sampling`.
 
 use brdf::V3;
 use brdf::beckmann::Beckmann;

@@ -2,9 +2,9 @@
 //! structure-of-arrays slices, on scalar `f32` / `f64` and on `f32x8` / `f64x4` lanes through
 //! [`brdf::batch`], and how far is each figure from the memory floor of the same bytes?
 //!
-//! Run: `cargo bench --bench throughput` (about five minutes). For the figures a user of
+//! Run: `cargo bench -p brdf-bench --bench throughput` (about five minutes). For the figures a user of
 //! `-C target-cpu=native` gets: `RUSTFLAGS="-C target-cpu=native" CARGO_TARGET_DIR=target/native
-//! cargo bench --bench throughput` (a separate target dir keeps both builds).
+//! cargo bench -p brdf-bench --bench throughput` (a separate target dir keeps both builds).
 //!
 //! Groups and rows: one group per kernel and batch size (`ggx_d/100000`, ...), with the rows
 //! `f32`, `f64` (scalar, through `batch::run::<f32>` / `run::<f64>`: one element per call),
@@ -40,7 +40,7 @@
 //! - `material_gltf`: `material::gltf`, base colour (0.9, 0.6, 0.3), metallic 0.5, roughness
 //!   0.5; three output slices (RGB).
 //!
-//! Side-by-side against Mitsuba 3 on the same batch: `benches/mitsuba/README.md`. For that
+//! Side-by-side against Mitsuba 3 on the same batch: `bench/mitsuba/README.md`. For that
 //! script this binary also has a timing mode, run when the environment variable
 //! `BRDF_THROUGHPUT_INPUT` names a raw file (six little-endian `f32` arrays of equal length:
 //! view x, y, z, then light x, y, z, unit vectors with z > 0): it times `ggx_d`, `ggx_d_plain`
@@ -397,7 +397,7 @@ fn ggx_d_plain<T: Real>(c: T, alpha: T) -> T {
     T::select(c.simd_gt(T::ZERO), a2 / (T::PI * t * t), T::ZERO)
 }
 
-/// The timing mode for `benches/mitsuba/compare.py` (module docs).
+/// The timing mode for `bench/mitsuba/compare.py` (module docs).
 fn timing_mode(path: &str) -> Result<(), String> {
     let bytes = std::fs::read(path).map_err(|e| format!("{path}: {e}"))?;
     if bytes.len() % 24 != 0 || bytes.is_empty() {

@@ -2,7 +2,7 @@
 //! Times a bilinear lookup in a 64 x 64 table (`ibl::dfg::lookup`, f32, scalar) against each
 //! fit on the same 4096 (NoV, roughness) pairs, on f32 and on f32x8 lanes; the error each fit
 //! pays is printed by `cargo test --test ibl dfg_approximations:: -- --nocapture`.
-//! Run: `cargo bench --bench ibl`.
+//! Run: `cargo bench -p brdf-bench --bench ibl`.
 
 use brdf::ibl::dfg;
 use brdf::wide::f32x8;

@@ -2,7 +2,7 @@
 //! Each group times the exact kernel and its approximations on the same 4096 inputs, on f32
 //! and on f32x8 lanes; the ratio of their times is the speed-up, and the error each one pays
 //! for it is measured by the tests named in its doc comment (`cargo test --test microfacet
-//! --test fresnel approximations:: -- --nocapture`). Run: `cargo bench --bench approximations`.
+//! --test fresnel approximations:: -- --nocapture`). Run: `cargo bench -p brdf-bench --bench approximations`.
 
 use brdf::wide::f32x8;
 use brdf::{beckmann, fresnel, ggx};
