@@ -18,6 +18,7 @@ use brdf::Cosines;
 use brdf::glam::DVec3;
 use brdf::integrate::{Estimate, directional_albedo};
 use brdf::material::MetallicRoughness;
+use brdf::microfacet::Alpha;
 use brdf::{V3, cook_torrance, ggx::Ggx, sampling};
 use std::process::ExitCode;
 
@@ -86,7 +87,7 @@ fn compare(label: &str, mc: &Mean, reference: Estimate) -> bool {
 
 /// GGX Cook-Torrance with F = 1 from the dot-product entry point.
 fn ggx_f1(alpha: f64, wo: V3<f64>, wi: V3<f64>) -> f64 {
-    cook_torrance::ggx(Cosines::from_local(wo, wi), alpha, 1.0)
+    cook_torrance::ggx(Cosines::from_local(wo, wi), Alpha(alpha), 1.0)
 }
 
 fn main() -> ExitCode {

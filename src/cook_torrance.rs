@@ -22,7 +22,7 @@
 use crate::domain::{above_horizon, nan_where};
 use crate::fresnel;
 use crate::fresnel::ComplexIor;
-use crate::microfacet::Microfacet;
+use crate::microfacet::{Alpha, Microfacet};
 use crate::real::Real;
 use crate::shading::Cosines;
 use crate::vec3::V3;
@@ -143,7 +143,8 @@ pub fn eval_rgb<T: Real, M: Microfacet<T> + ?Sized>(
 
 /// Dot-product entry point of isotropic GGX Cook-Torrance: f = D(n.h) V(n.v, n.l) F, with
 /// [`crate::ggx::d`] and [`crate::ggx::v_correlated`], F given by the caller (the shader
-/// form: `D_GGX * V_SmithGGXCorrelated * F`). `c` is the shading point's [`Cosines`]; F is
+/// form: `D_GGX * V_SmithGGXCorrelated * F`). `c` is the shading point's [`Cosines`], `alpha`
+/// the roughness as an [`Alpha`] (not the perceptual roughness: [`Alpha::from_perceptual`]); F is
 /// given, so its v.h only passes a NaN on (the F the caller formed from it).
 ///
 /// Domain: cosines in [-1, 1] (clamped to [0, 1]; 0 where n.l <= 0 or n.v <= 0), alpha in
@@ -153,7 +154,8 @@ pub fn eval_rgb<T: Real, M: Microfacet<T> + ?Sized>(
 #[cfg(feature = "ggx")]
 #[inline]
 #[must_use]
-pub fn ggx<T: Real>(c: Cosines<T>, alpha: T, fresnel: T) -> T {
+pub fn ggx<T: Real>(c: Cosines<T>, alpha: Alpha<T>, fresnel: T) -> T {
+    let alpha = alpha.0;
     let dv = ggx_dv(c, alpha);
     assemble(dv, c, alpha, fresnel)
 }
@@ -191,7 +193,8 @@ fn assemble<T: Real>(dv: T, c: Cosines<T>, alpha: T, fresnel: T) -> T {
 #[cfg(feature = "beckmann")]
 #[inline]
 #[must_use]
-pub fn beckmann<T: Real>(c: Cosines<T>, alpha: T, fresnel: T) -> T {
+pub fn beckmann<T: Real>(c: Cosines<T>, alpha: Alpha<T>, fresnel: T) -> T {
+    let alpha = alpha.0;
     let dv = beckmann_dv(c, alpha);
     assemble(dv, c, alpha, fresnel)
 }
@@ -246,20 +249,22 @@ fn assemble_rgb<T: Real>(dv: T, c: Cosines<T>, alpha: T, f: V3<T>) -> V3<T> {
 ///
 /// ```
 /// use brdf::fresnel::ComplexIor;
+/// use brdf::microfacet::Alpha;
 /// use brdf::{Cosines, V3, cook_torrance};
 /// // A gold-like conductor: red and green reflect more than blue.
 /// let gold = ComplexIor { eta: V3::new(0.18, 0.42, 1.37), k: V3::new(3.42, 2.35, 1.77) };
 /// let c = Cosines { n_dot_v: 0.8, n_dot_l: 0.7, n_dot_h: 0.95, v_dot_h: 0.9 };
-/// let f = cook_torrance::ggx_conductor_rgb(c, 0.3, gold);
+/// let f = cook_torrance::ggx_conductor_rgb(c, Alpha(0.3), gold);
 /// assert!(f.x > f.z && f.y > f.z && f.z > 0.0);
 /// // Below the horizon: nothing.
-/// let dark = cook_torrance::ggx_conductor_rgb(Cosines { n_dot_l: -0.1, ..c }, 0.3, gold);
+/// let dark = cook_torrance::ggx_conductor_rgb(Cosines { n_dot_l: -0.1, ..c }, Alpha(0.3), gold);
 /// assert_eq!(dark, V3::splat(0.0));
 /// ```
 #[cfg(feature = "ggx")]
 #[inline]
 #[must_use]
-pub fn ggx_conductor_rgb<T: Real>(c: Cosines<T>, alpha: T, ior: ComplexIor<V3<T>>) -> V3<T> {
+pub fn ggx_conductor_rgb<T: Real>(c: Cosines<T>, alpha: Alpha<T>, ior: ComplexIor<V3<T>>) -> V3<T> {
+    let alpha = alpha.0;
     let f = fresnel::conductor_rgb(c.v_dot_h.saturate(), ior.eta, ior.k);
     let dv = ggx_dv(c, alpha);
     assemble_rgb(dv, c, alpha, f)
@@ -278,10 +283,11 @@ pub fn ggx_conductor_rgb<T: Real>(c: Cosines<T>, alpha: T, ior: ComplexIor<V3<T>
 /// `D_GGX * V_SmithGGXCorrelated * F_Schlick`.
 ///
 /// ```
+/// use brdf::microfacet::Alpha;
 /// use brdf::{Cosines, V3, cook_torrance};
 /// let f0 = V3::new(0.04, 0.04, 0.04); // a glTF dielectric base
 /// let normal = Cosines { n_dot_v: 1.0, n_dot_l: 1.0, n_dot_h: 1.0, v_dot_h: 1.0 };
-/// let f = cook_torrance::ggx_schlick_rgb(normal, 0.5, f0);
+/// let f = cook_torrance::ggx_schlick_rgb(normal, Alpha(0.5), f0);
 /// // At normal incidence on a mirror-aligned facet: D(1) = 1 / (pi alpha^2), V = 1 / 4, F = F0.
 /// let expected = 0.04 / (core::f64::consts::PI * 0.25) / 4.0;
 /// assert!((f.x - expected).abs() < 1e-15);
@@ -289,7 +295,8 @@ pub fn ggx_conductor_rgb<T: Real>(c: Cosines<T>, alpha: T, ior: ComplexIor<V3<T>
 #[cfg(feature = "ggx")]
 #[inline]
 #[must_use]
-pub fn ggx_schlick_rgb<T: Real>(c: Cosines<T>, alpha: T, f0: V3<T>) -> V3<T> {
+pub fn ggx_schlick_rgb<T: Real>(c: Cosines<T>, alpha: Alpha<T>, f0: V3<T>) -> V3<T> {
+    let alpha = alpha.0;
     let f = fresnel::schlick_rgb(f0, c.v_dot_h.saturate());
     let dv = ggx_dv(c, alpha);
     assemble_rgb(dv, c, alpha, f)
@@ -314,17 +321,19 @@ pub fn ggx_schlick_rgb<T: Real>(c: Cosines<T>, alpha: T, f0: V3<T>) -> V3<T> {
 /// "Principles of Optics", section 1.5.
 ///
 /// ```
+/// use brdf::microfacet::Alpha;
 /// use brdf::{Cosines, cook_torrance};
 /// // Glass (eta = 1.5) at normal incidence: F = ((eta - 1) / (eta + 1))^2 = 0.04.
 /// let normal = Cosines { n_dot_v: 1.0, n_dot_l: 1.0, n_dot_h: 1.0, v_dot_h: 1.0 };
-/// let f = cook_torrance::ggx_dielectric(normal, 0.5, 1.5);
+/// let f = cook_torrance::ggx_dielectric(normal, Alpha(0.5), 1.5);
 /// let expected = 0.04 / (core::f64::consts::PI * 0.25) / 4.0;
 /// assert!((f - expected).abs() < 1e-15);
 /// ```
 #[cfg(feature = "ggx")]
 #[inline]
 #[must_use]
-pub fn ggx_dielectric<T: Real>(c: Cosines<T>, alpha: T, eta: T) -> T {
+pub fn ggx_dielectric<T: Real>(c: Cosines<T>, alpha: Alpha<T>, eta: T) -> T {
+    let alpha = alpha.0;
     let f = fresnel::dielectric(c.v_dot_h.saturate(), eta);
     let dv = ggx_dv(c, alpha);
     assemble(dv, c, alpha, f)
@@ -343,16 +352,22 @@ pub fn ggx_dielectric<T: Real>(c: Cosines<T>, alpha: T, eta: T) -> T {
 ///
 /// ```
 /// use brdf::fresnel::ComplexIor;
+/// use brdf::microfacet::Alpha;
 /// use brdf::{Cosines, V3, cook_torrance};
 /// let gold = ComplexIor { eta: V3::new(0.18, 0.42, 1.37), k: V3::new(3.42, 2.35, 1.77) };
 /// let c = Cosines { n_dot_v: 0.8, n_dot_l: 0.7, n_dot_h: 0.95, v_dot_h: 0.9 };
-/// let f = cook_torrance::beckmann_conductor_rgb(c, 0.3, gold);
+/// let f = cook_torrance::beckmann_conductor_rgb(c, Alpha(0.3), gold);
 /// assert!(f.x > f.z && f.z > 0.0);
 /// ```
 #[cfg(feature = "beckmann")]
 #[inline]
 #[must_use]
-pub fn beckmann_conductor_rgb<T: Real>(c: Cosines<T>, alpha: T, ior: ComplexIor<V3<T>>) -> V3<T> {
+pub fn beckmann_conductor_rgb<T: Real>(
+    c: Cosines<T>,
+    alpha: Alpha<T>,
+    ior: ComplexIor<V3<T>>,
+) -> V3<T> {
+    let alpha = alpha.0;
     let f = fresnel::conductor_rgb(c.v_dot_h.saturate(), ior.eta, ior.k);
     let dv = beckmann_dv(c, alpha);
     assemble_rgb(dv, c, alpha, f)
@@ -364,15 +379,17 @@ pub fn beckmann_conductor_rgb<T: Real>(c: Cosines<T>, alpha: T, ior: ComplexIor<
 /// sources as `ggx_schlick_rgb` and [`beckmann_conductor_rgb`].
 ///
 /// ```
+/// use brdf::microfacet::Alpha;
 /// use brdf::{Cosines, V3, cook_torrance};
 /// let c = Cosines { n_dot_v: 0.8, n_dot_l: 0.7, n_dot_h: 0.95, v_dot_h: 0.9 };
-/// let f = cook_torrance::beckmann_schlick_rgb(c, 0.3, V3::splat(0.04));
+/// let f = cook_torrance::beckmann_schlick_rgb(c, Alpha(0.3), V3::splat(0.04));
 /// assert!(f.x > 0.0 && f.x == f.z);
 /// ```
 #[cfg(feature = "beckmann")]
 #[inline]
 #[must_use]
-pub fn beckmann_schlick_rgb<T: Real>(c: Cosines<T>, alpha: T, f0: V3<T>) -> V3<T> {
+pub fn beckmann_schlick_rgb<T: Real>(c: Cosines<T>, alpha: Alpha<T>, f0: V3<T>) -> V3<T> {
+    let alpha = alpha.0;
     let f = fresnel::schlick_rgb(f0, c.v_dot_h.saturate());
     let dv = beckmann_dv(c, alpha);
     assemble_rgb(dv, c, alpha, f)
@@ -384,15 +401,17 @@ pub fn beckmann_schlick_rgb<T: Real>(c: Cosines<T>, alpha: T, f0: V3<T>) -> V3<T
 /// and sources as `ggx_dielectric` and [`beckmann_conductor_rgb`].
 ///
 /// ```
+/// use brdf::microfacet::Alpha;
 /// use brdf::{Cosines, cook_torrance};
 /// let c = Cosines { n_dot_v: 0.8, n_dot_l: 0.7, n_dot_h: 0.95, v_dot_h: 0.9 };
-/// let f: f64 = cook_torrance::beckmann_dielectric(c, 0.3, 1.5);
+/// let f: f64 = cook_torrance::beckmann_dielectric(c, Alpha(0.3), 1.5);
 /// assert!(f > 0.0 && f.is_finite());
 /// ```
 #[cfg(feature = "beckmann")]
 #[inline]
 #[must_use]
-pub fn beckmann_dielectric<T: Real>(c: Cosines<T>, alpha: T, eta: T) -> T {
+pub fn beckmann_dielectric<T: Real>(c: Cosines<T>, alpha: Alpha<T>, eta: T) -> T {
+    let alpha = alpha.0;
     let f = fresnel::dielectric(c.v_dot_h.saturate(), eta);
     let dv = beckmann_dv(c, alpha);
     assemble(dv, c, alpha, f)

@@ -209,6 +209,43 @@ pub(crate) fn clamp_alpha<T: Real>(alpha: T) -> T {
     )
 }
 
+/// The microfacet roughness alpha (the NDF's width: GGX's alpha, Beckmann's RMS slope) as its
+/// own type, so that a perceptual roughness cannot be passed where alpha is meant: the full
+/// Cook-Torrance BRDFs (`cook_torrance::ggx`, `ggx_schlick_rgb`, ...) take `Alpha<T>`, while
+/// the material entry points take the perceptual roughness (glTF's `roughnessFactor`) as a
+/// plain value. Build it from alpha itself, `Alpha(a)`, or from a perceptual roughness,
+/// [`Alpha::from_perceptual`] (alpha = r^2, floored at [`ALPHA_MIN`]).
+///
+/// A named wrapper, not a validated parameter: the kernel it reaches keeps the crate's rule
+/// (alpha < 0, +inf or NaN give NaN; alpha is clamped to [[`ALPHA_MIN`], [`ALPHA_MAX`]]).
+///
+/// ```
+/// use brdf::microfacet::Alpha;
+/// use brdf::{Cosines, cook_torrance};
+/// let c = Cosines { n_dot_v: 0.8_f64, n_dot_l: 0.7, n_dot_h: 0.95, v_dot_h: 0.9 };
+/// let a = cook_torrance::ggx(c, Alpha::from_perceptual(0.5), 1.0);
+/// assert_eq!(a, cook_torrance::ggx(c, Alpha(0.25), 1.0));
+/// ```
+///
+/// ```compile_fail
+/// use brdf::{Cosines, cook_torrance};
+/// let c = Cosines { n_dot_v: 0.8_f64, n_dot_l: 0.7, n_dot_h: 0.95, v_dot_h: 0.9 };
+/// let roughness = 0.5;
+/// let f = cook_torrance::ggx(c, roughness, 1.0); // a bare float is not an alpha
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Alpha<T>(pub T);
+
+impl<T: Real> Alpha<T> {
+    /// alpha = roughness^2 from a perceptual roughness ([`alpha_from_perceptual`], floored at
+    /// [`ALPHA_MIN`]; NaN for a negative, infinite or NaN roughness).
+    #[inline]
+    #[must_use]
+    pub fn from_perceptual(roughness: T) -> Self {
+        Self(alpha_from_perceptual(roughness))
+    }
+}
+
 /// Perceptual roughness r to alpha = r^2, clamped to [[`ALPHA_MIN`], [`ALPHA_MAX`]] (so r below
 /// 0.01 gives ALPHA_MIN). The square makes a linear roughness slider perceptually even (Burley
 /// 2012, "Physically-Based Shading at Disney"; Karis 2013, "Real Shading in Unreal Engine 4").

@@ -56,6 +56,7 @@
 //! kernel's outputs there as raw `f32` (`<kernel>.f32`), for the script to compare values.
 
 use brdf::Cosines;
+use brdf::microfacet::Alpha;
 use brdf::wide::{f32x8, f64x4};
 use brdf::{Real, V3, batch, beckmann, cook_torrance, diffuse, fresnel, ggx, material};
 use criterion::{BenchmarkId, Criterion, SamplingMode, Throughput, criterion_group};
@@ -103,7 +104,7 @@ fn rough_conductor<T: Real>([nh, nv, nl, vh]: [T; 4]) -> [T; 1] {
             n_dot_h: nh,
             v_dot_h: vh,
         },
-        T::splat(ALPHA),
+        Alpha(T::splat(ALPHA)),
         f,
     ) * nl.saturate()]
 }
@@ -138,7 +139,7 @@ fn ggx_lambert<T: Real>([nh, nv, nl, vh]: [T; 4]) -> [T; 1] {
             n_dot_h: nh,
             v_dot_h: vh,
         },
-        a,
+        Alpha(a),
         fresnel::schlick(T::splat(F0), vh),
     );
     [spec + diffuse::lambert(nv, nl, T::splat(RHO))]
@@ -475,7 +476,7 @@ fn timing_mode(path: &str) -> Result<(), String> {
                             n_dot_h: h.z,
                             v_dot_h: vh,
                         },
-                        alpha,
+                        Alpha(alpha),
                         f,
                     ) * lz.saturate()]
                 });

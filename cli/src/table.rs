@@ -46,6 +46,7 @@
 
 use brdf::fresnel::ComplexIor;
 use brdf::ibl::energy::{Albedo, AverageAlbedo, Reflectance};
+use brdf::microfacet::Alpha;
 use brdf::microfacet::{ALPHA_MAX, ALPHA_MIN};
 use brdf::wide::{f32x8, f64x4};
 use brdf::{Cosines, Mask, ParamError, Real, V3};
@@ -1501,7 +1502,7 @@ pub static KERNELS: &[Kernel] = &[
          alpha: ALPHA,
          fresnel: Domain::new(0.0, false, f64::INFINITY, true, "F >= 0, finite")]
             -> [f: Domain::NONNEG],
-        [cook_torrance::ggx(cosines(n_dot_v, n_dot_l, n_dot_h, v_dot_h), alpha, fresnel)]
+        [cook_torrance::ggx(cosines(n_dot_v, n_dot_l, n_dot_h, v_dot_h), Alpha(alpha), fresnel)]
     ),
     kernel!(
         "cook_torrance::beckmann",
@@ -1511,7 +1512,7 @@ pub static KERNELS: &[Kernel] = &[
          alpha: ALPHA,
          fresnel: Domain::new(0.0, false, f64::INFINITY, true, "F >= 0, finite")]
             -> [f: Domain::NONNEG],
-        [cook_torrance::beckmann(cosines(n_dot_v, n_dot_l, n_dot_h, v_dot_h), alpha, fresnel)]
+        [cook_torrance::beckmann(cosines(n_dot_v, n_dot_l, n_dot_h, v_dot_h), Alpha(alpha), fresnel)]
     ),
     kernel!(
         "cook_torrance::ggx_conductor_rgb",
@@ -1520,11 +1521,7 @@ pub static KERNELS: &[Kernel] = &[
         [n_dot_v: Domain::COS, n_dot_l: Domain::COS, n_dot_h: Domain::COS, v_dot_h: Domain::COS,
          alpha: ALPHA, eta_r: ETA, eta_g: ETA, eta_b: ETA, k_r: KAPPA, k_g: KAPPA, k_b: KAPPA]
             -> [f_r: Domain::NONNEG, f_g: Domain::NONNEG, f_b: Domain::NONNEG],
-        o3(cook_torrance::ggx_conductor_rgb(
-            cosines(n_dot_v, n_dot_l, n_dot_h, v_dot_h),
-            alpha,
-            ComplexIor { eta: v3(eta_r, eta_g, eta_b), k: v3(k_r, k_g, k_b) },
-        ))
+        o3(cook_torrance::ggx_conductor_rgb(cosines(n_dot_v, n_dot_l, n_dot_h, v_dot_h), Alpha(alpha), ComplexIor { eta: v3(eta_r, eta_g, eta_b), k: v3(k_r, k_g, k_b) }))
     ),
     kernel!(
         "cook_torrance::ggx_schlick_rgb",
@@ -1533,9 +1530,7 @@ pub static KERNELS: &[Kernel] = &[
         [n_dot_v: Domain::COS, n_dot_l: Domain::COS, n_dot_h: Domain::COS, v_dot_h: Domain::COS,
          alpha: ALPHA, f0_r: Domain::UNIT, f0_g: Domain::UNIT, f0_b: Domain::UNIT]
             -> [f_r: Domain::NONNEG, f_g: Domain::NONNEG, f_b: Domain::NONNEG],
-        o3(cook_torrance::ggx_schlick_rgb(
-            cosines(n_dot_v, n_dot_l, n_dot_h, v_dot_h), alpha, v3(f0_r, f0_g, f0_b),
-        ))
+        o3(cook_torrance::ggx_schlick_rgb(cosines(n_dot_v, n_dot_l, n_dot_h, v_dot_h), Alpha(alpha), v3(f0_r, f0_g, f0_b)))
     ),
     kernel!(
         "cook_torrance::ggx_dielectric",
@@ -1543,7 +1538,7 @@ pub static KERNELS: &[Kernel] = &[
          Born and Wolf 1.5",
         [n_dot_v: Domain::COS, n_dot_l: Domain::COS, n_dot_h: Domain::COS, v_dot_h: Domain::COS,
          alpha: ALPHA, eta: ETA] -> [f: Domain::NONNEG],
-        [cook_torrance::ggx_dielectric(cosines(n_dot_v, n_dot_l, n_dot_h, v_dot_h), alpha, eta)]
+        [cook_torrance::ggx_dielectric(cosines(n_dot_v, n_dot_l, n_dot_h, v_dot_h), Alpha(alpha), eta)]
     ),
     kernel!(
         "cook_torrance::beckmann_conductor_rgb",
@@ -1552,11 +1547,7 @@ pub static KERNELS: &[Kernel] = &[
         [n_dot_v: Domain::COS, n_dot_l: Domain::COS, n_dot_h: Domain::COS, v_dot_h: Domain::COS,
          alpha: ALPHA, eta_r: ETA, eta_g: ETA, eta_b: ETA, k_r: KAPPA, k_g: KAPPA, k_b: KAPPA]
             -> [f_r: Domain::NONNEG, f_g: Domain::NONNEG, f_b: Domain::NONNEG],
-        o3(cook_torrance::beckmann_conductor_rgb(
-            cosines(n_dot_v, n_dot_l, n_dot_h, v_dot_h),
-            alpha,
-            ComplexIor { eta: v3(eta_r, eta_g, eta_b), k: v3(k_r, k_g, k_b) },
-        ))
+        o3(cook_torrance::beckmann_conductor_rgb(cosines(n_dot_v, n_dot_l, n_dot_h, v_dot_h), Alpha(alpha), ComplexIor { eta: v3(eta_r, eta_g, eta_b), k: v3(k_r, k_g, k_b) }))
     ),
     kernel!(
         "cook_torrance::beckmann_schlick_rgb",
@@ -1564,9 +1555,7 @@ pub static KERNELS: &[Kernel] = &[
         [n_dot_v: Domain::COS, n_dot_l: Domain::COS, n_dot_h: Domain::COS, v_dot_h: Domain::COS,
          alpha: ALPHA, f0_r: Domain::UNIT, f0_g: Domain::UNIT, f0_b: Domain::UNIT]
             -> [f_r: Domain::NONNEG, f_g: Domain::NONNEG, f_b: Domain::NONNEG],
-        o3(cook_torrance::beckmann_schlick_rgb(
-            cosines(n_dot_v, n_dot_l, n_dot_h, v_dot_h), alpha, v3(f0_r, f0_g, f0_b),
-        ))
+        o3(cook_torrance::beckmann_schlick_rgb(cosines(n_dot_v, n_dot_l, n_dot_h, v_dot_h), Alpha(alpha), v3(f0_r, f0_g, f0_b)))
     ),
     kernel!(
         "cook_torrance::beckmann_dielectric",
@@ -1574,7 +1563,7 @@ pub static KERNELS: &[Kernel] = &[
          2007",
         [n_dot_v: Domain::COS, n_dot_l: Domain::COS, n_dot_h: Domain::COS, v_dot_h: Domain::COS,
          alpha: ALPHA, eta: ETA] -> [f: Domain::NONNEG],
-        [cook_torrance::beckmann_dielectric(cosines(n_dot_v, n_dot_l, n_dot_h, v_dot_h), alpha, eta)]
+        [cook_torrance::beckmann_dielectric(cosines(n_dot_v, n_dot_l, n_dot_h, v_dot_h), Alpha(alpha), eta)]
     ),
     // ---------------------------------------------------------------- sampling
     kernel!(

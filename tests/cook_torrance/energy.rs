@@ -15,6 +15,7 @@ use brdf::beckmann::Beckmann;
 use brdf::cook_torrance;
 use brdf::ggx::Ggx;
 use brdf::integrate::{directional_albedo, reciprocity};
+use brdf::microfacet::Alpha;
 use brdf::microfacet::Microfacet;
 use glam::DVec3;
 
@@ -145,7 +146,7 @@ fn dot_product_entry_points_equal_the_vector_ones() {
                 n_dot_h: h.z,
                 v_dot_h,
             },
-            alpha,
+            Alpha(alpha),
             f,
         );
         let vec_b = cook_torrance::eval(&b, wo, wi, |c| brdf::fresnel::schlick(0.04, c));
@@ -156,7 +157,7 @@ fn dot_product_entry_points_equal_the_vector_ones() {
                 n_dot_h: h.z,
                 v_dot_h,
             },
-            alpha,
+            Alpha(alpha),
             f,
         );
         assert!((vec_g - dot_g).abs() <= 1e-12 * vec_g, "{vec_g} vs {dot_g}");

@@ -23,6 +23,7 @@ use brdf::fresnel;
 use brdf::fresnel::ComplexIor;
 use brdf::ggx::Ggx;
 use brdf::integrate::directional_albedo;
+use brdf::microfacet::Alpha;
 use brdf::wide::{f32x8, f64x4};
 use brdf::{Real, V3};
 use glam::DVec3;
@@ -71,15 +72,16 @@ fn grid() -> Vec<[f64; 5]> {
 #[allow(clippy::type_complexity)]
 fn per_channel_bits<T: Real>(
     name: &str,
-    scalar: fn(Cosines<T>, T, T) -> T,
-    conductor: fn(Cosines<T>, T, ComplexIor<V3<T>>) -> V3<T>,
-    schlick: fn(Cosines<T>, T, V3<T>) -> V3<T>,
-    dielectric: fn(Cosines<T>, T, T) -> T,
+    scalar: fn(Cosines<T>, Alpha<T>, T) -> T,
+    conductor: fn(Cosines<T>, Alpha<T>, ComplexIor<V3<T>>) -> V3<T>,
+    schlick: fn(Cosines<T>, Alpha<T>, V3<T>) -> V3<T>,
+    dielectric: fn(Cosines<T>, Alpha<T>, T) -> T,
 ) -> usize {
     let mut n = 0;
     let mut fails = Vec::new();
     for p in grid() {
         let [nh, nv, nl, vh, a] = p.map(T::splat);
+        let a = Alpha(a);
         let cs = Cosines {
             n_dot_v: nv,
             n_dot_l: nl,
@@ -235,7 +237,7 @@ fn direction_path_ulps<T: Real>(
                             n_dot_h: nh,
                             v_dot_h: vh,
                         },
-                        al,
+                        Alpha(al),
                         ComplexIor { eta: e, k: kk },
                     ),
                     ct::eval_rgb(&ggx, wo, wi, fr),
@@ -249,7 +251,7 @@ fn direction_path_ulps<T: Real>(
                             n_dot_h: nh,
                             v_dot_h: vh,
                         },
-                        al,
+                        Alpha(al),
                         ComplexIor { eta: e, k: kk },
                     ),
                     ct::eval_rgb(&bk, wo, wi, fr),
@@ -267,7 +269,7 @@ fn direction_path_ulps<T: Real>(
                             n_dot_h: nh,
                             v_dot_h: vh,
                         },
-                        al,
+                        Alpha(al),
                         f0,
                     ),
                     ct::eval_rgb(&ggx, wo, wi, fr),
@@ -281,7 +283,7 @@ fn direction_path_ulps<T: Real>(
                             n_dot_h: nh,
                             v_dot_h: vh,
                         },
-                        al,
+                        Alpha(al),
                         f0,
                     ),
                     ct::eval_rgb(&bk, wo, wi, fr),
@@ -297,7 +299,7 @@ fn direction_path_ulps<T: Real>(
                         n_dot_h: nh,
                         v_dot_h: vh,
                     },
-                    al,
+                    Alpha(al),
                     e,
                 );
                 let b = ct::beckmann_dielectric(
@@ -307,7 +309,7 @@ fn direction_path_ulps<T: Real>(
                         n_dot_h: nh,
                         v_dot_h: vh,
                     },
-                    al,
+                    Alpha(al),
                     e,
                 );
                 cmp(
@@ -397,7 +399,7 @@ fn rgb_forms_conserve_energy() {
                         n_dot_h: nh,
                         v_dot_h: vh,
                     },
-                    a,
+                    Alpha(a),
                     V3::splat(1.0),
                 )
                 .x
@@ -413,7 +415,7 @@ fn rgb_forms_conserve_energy() {
                         n_dot_h: nh,
                         v_dot_h: vh,
                     },
-                    a,
+                    Alpha(a),
                     ComplexIor {
                         eta: gold.0,
                         k: gold.1,
@@ -432,7 +434,7 @@ fn rgb_forms_conserve_energy() {
                         n_dot_h: nh,
                         v_dot_h: vh,
                     },
-                    a,
+                    Alpha(a),
                     1.5,
                 )
             }),
@@ -447,7 +449,7 @@ fn rgb_forms_conserve_energy() {
                         n_dot_h: nh,
                         v_dot_h: vh,
                     },
-                    a,
+                    Alpha(a),
                     V3::splat(1.0),
                 )
                 .x
@@ -463,7 +465,7 @@ fn rgb_forms_conserve_energy() {
                         n_dot_h: nh,
                         v_dot_h: vh,
                     },
-                    a,
+                    Alpha(a),
                     ComplexIor {
                         eta: gold.0,
                         k: gold.1,
@@ -482,7 +484,7 @@ fn rgb_forms_conserve_energy() {
                         n_dot_h: nh,
                         v_dot_h: vh,
                     },
-                    a,
+                    Alpha(a),
                     1.5,
                 )
             }),
@@ -551,7 +553,7 @@ fn lanes_vs_scalars<L: Real>() -> [u64; 6] {
                     n_dot_h: nh,
                     v_dot_h: vh,
                 },
-                a,
+                Alpha(a),
                 ComplexIor {
                     eta: v3(eta),
                     k: v3(k),
@@ -564,7 +566,7 @@ fn lanes_vs_scalars<L: Real>() -> [u64; 6] {
                     n_dot_h: nh,
                     v_dot_h: vh,
                 },
-                a,
+                Alpha(a),
                 v3(f0),
             ),
             V3::splat(ct::ggx_dielectric(
@@ -574,7 +576,7 @@ fn lanes_vs_scalars<L: Real>() -> [u64; 6] {
                     n_dot_h: nh,
                     v_dot_h: vh,
                 },
-                a,
+                Alpha(a),
                 L::splat(1.5),
             )),
             ct::beckmann_conductor_rgb(
@@ -584,7 +586,7 @@ fn lanes_vs_scalars<L: Real>() -> [u64; 6] {
                     n_dot_h: nh,
                     v_dot_h: vh,
                 },
-                a,
+                Alpha(a),
                 ComplexIor {
                     eta: v3(eta),
                     k: v3(k),
@@ -597,7 +599,7 @@ fn lanes_vs_scalars<L: Real>() -> [u64; 6] {
                     n_dot_h: nh,
                     v_dot_h: vh,
                 },
-                a,
+                Alpha(a),
                 v3(f0),
             ),
             V3::splat(ct::beckmann_dielectric(
@@ -607,7 +609,7 @@ fn lanes_vs_scalars<L: Real>() -> [u64; 6] {
                     n_dot_h: nh,
                     v_dot_h: vh,
                 },
-                a,
+                Alpha(a),
                 L::splat(1.5),
             )),
         ];
@@ -622,7 +624,7 @@ fn lanes_vs_scalars<L: Real>() -> [u64; 6] {
                         n_dot_h: nh,
                         v_dot_h: vh,
                     },
-                    a,
+                    Alpha(a),
                     ComplexIor {
                         eta: v3(eta),
                         k: v3(k),
@@ -635,7 +637,7 @@ fn lanes_vs_scalars<L: Real>() -> [u64; 6] {
                         n_dot_h: nh,
                         v_dot_h: vh,
                     },
-                    a,
+                    Alpha(a),
                     v3(f0),
                 ),
                 V3::splat(ct::ggx_dielectric(
@@ -645,7 +647,7 @@ fn lanes_vs_scalars<L: Real>() -> [u64; 6] {
                         n_dot_h: nh,
                         v_dot_h: vh,
                     },
-                    a,
+                    Alpha(a),
                     s(1.5),
                 )),
                 ct::beckmann_conductor_rgb(
@@ -655,7 +657,7 @@ fn lanes_vs_scalars<L: Real>() -> [u64; 6] {
                         n_dot_h: nh,
                         v_dot_h: vh,
                     },
-                    a,
+                    Alpha(a),
                     ComplexIor {
                         eta: v3(eta),
                         k: v3(k),
@@ -668,7 +670,7 @@ fn lanes_vs_scalars<L: Real>() -> [u64; 6] {
                         n_dot_h: nh,
                         v_dot_h: vh,
                     },
-                    a,
+                    Alpha(a),
                     v3(f0),
                 ),
                 V3::splat(ct::beckmann_dielectric(
@@ -678,7 +680,7 @@ fn lanes_vs_scalars<L: Real>() -> [u64; 6] {
                         n_dot_h: nh,
                         v_dot_h: vh,
                     },
-                    a,
+                    Alpha(a),
                     s(1.5),
                 )),
             ];

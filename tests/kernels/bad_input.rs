@@ -49,6 +49,8 @@ use brdf::Cosines;
 use brdf::fresnel::ComplexIor;
 #[cfg(feature = "ibl")]
 use brdf::ibl::energy::{Albedo, AverageAlbedo, Reflectance};
+#[cfg(feature = "cook-torrance")]
+use brdf::microfacet::Alpha;
 use brdf::wide::{f32x8, f64x4};
 use brdf::{Real, V3};
 
@@ -1097,7 +1099,7 @@ fn cook_torrance_rows<T: Real>(t: &mut Vec<Kernel<T>>) {
                         n_dot_h: x[0],
                         v_dot_h: x[3],
                     },
-                    x[4],
+                    Alpha(x[4]),
                     x[5],
                 )]
             },
@@ -1122,7 +1124,7 @@ fn cook_torrance_rows<T: Real>(t: &mut Vec<Kernel<T>>) {
                             n_dot_h: x[0],
                             v_dot_h: x[3],
                         },
-                        x[4],
+                        Alpha(x[4]),
                         ComplexIor {
                             eta: v3(x, 5),
                             k: v3(x, 8),
@@ -1156,7 +1158,7 @@ fn cook_torrance_rows<T: Real>(t: &mut Vec<Kernel<T>>) {
                             n_dot_h: x[0],
                             v_dot_h: x[3],
                         },
-                        x[4],
+                        Alpha(x[4]),
                         v3(x, 5),
                     ))
                 },
@@ -1183,7 +1185,7 @@ fn cook_torrance_rows<T: Real>(t: &mut Vec<Kernel<T>>) {
                         n_dot_h: x[0],
                         v_dot_h: x[3],
                     },
-                    x[4],
+                    Alpha(x[4]),
                     x[5],
                 )]
             },
@@ -1209,7 +1211,7 @@ fn cook_torrance_rows<T: Real>(t: &mut Vec<Kernel<T>>) {
                     n_dot_h: x[0],
                     v_dot_h: x[3],
                 },
-                x[4],
+                Alpha(x[4]),
                 x[5],
             )]
         },
@@ -1236,7 +1238,7 @@ fn cook_torrance_rows<T: Real>(t: &mut Vec<Kernel<T>>) {
                             n_dot_h: x[0],
                             v_dot_h: x[3],
                         },
-                        x[4],
+                        Alpha(x[4]),
                         ComplexIor {
                             eta: v3(x, 5),
                             k: v3(x, 8),
@@ -1270,7 +1272,7 @@ fn cook_torrance_rows<T: Real>(t: &mut Vec<Kernel<T>>) {
                             n_dot_h: x[0],
                             v_dot_h: x[3],
                         },
-                        x[4],
+                        Alpha(x[4]),
                         v3(x, 5),
                     ))
                 },
@@ -1297,7 +1299,7 @@ fn cook_torrance_rows<T: Real>(t: &mut Vec<Kernel<T>>) {
                         n_dot_h: x[0],
                         v_dot_h: x[3],
                     },
-                    x[4],
+                    Alpha(x[4]),
                     x[5],
                 )]
             },
@@ -2585,6 +2587,8 @@ const NOT_KERNELS: &[(&str, &str)] = &[
 /// Methods every parameter type of these modules has: constructor and getters.
 const NOT_KERNEL_METHODS: &[&str] = &[
     "new",
+    // microfacet::Alpha's constructor: microfacet::alpha_from_perceptual, which is a row.
+    "from_perceptual",
     "from_frame",
     "frame",
     "wo",

@@ -18,6 +18,7 @@ use brdf::Cosines;
 use brdf::beckmann::{self, Beckmann};
 use brdf::cook_torrance;
 use brdf::ggx::{self, Ggx};
+use brdf::microfacet::Alpha;
 use brdf::microfacet::{self, ALPHA_MAX, ALPHA_MIN, Microfacet};
 use brdf::real::Mask;
 use brdf::sampling;
@@ -103,7 +104,7 @@ fn outputs<T: Real>(c1: T, c2: T, alpha: T, u1: T, u2: T) -> Vec<(&'static str, 
                     n_dot_h: u1,
                     v_dot_h: u1,
                 },
-                alpha,
+                Alpha(alpha),
                 u2,
             ),
         ),
@@ -117,7 +118,7 @@ fn outputs<T: Real>(c1: T, c2: T, alpha: T, u1: T, u2: T) -> Vec<(&'static str, 
                     n_dot_h: u1,
                     v_dot_h: u1,
                 },
-                alpha,
+                Alpha(alpha),
                 u2,
             ),
         ),
@@ -507,7 +508,7 @@ fn nan_inputs<T: Real>() -> usize {
                 n_dot_h: u1,
                 v_dot_h: u1
             },
-            a,
+            Alpha(a),
             T::splat(-0.5)
         )
         .is_nan()

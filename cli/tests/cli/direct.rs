@@ -11,6 +11,7 @@ use brdf::ggx::{self, Ggx};
 use brdf::ibl::energy::{Albedo, AverageAlbedo, Reflectance};
 use brdf::ibl::{dfg, energy, irradiance, prefilter};
 use brdf::material::{self, DiffuseCoupling, MetallicRoughness};
+use brdf::microfacet::Alpha;
 use brdf::microfacet::{self, Microfacet};
 use brdf::tonemap::{self, AgxLook, HableParams, LottesParams, Operator, UchimuraParams};
 use brdf::{Cosines, Real, V3, color, cook_torrance, diffuse, fresnel, lights, phong, sampling};
@@ -249,35 +250,43 @@ pub fn direct<T: Scalar>(path: &str, a: &[T]) -> Option<Vec<T>> {
                 |_| fr,
             ))
         }
-        "cook_torrance::ggx" => vec![cook_torrance::ggx(c(a, 0), a[4], a[5])],
-        "cook_torrance::beckmann" => vec![cook_torrance::beckmann(c(a, 0), a[4], a[5])],
+        "cook_torrance::ggx" => vec![cook_torrance::ggx(c(a, 0), Alpha(a[4]), a[5])],
+        "cook_torrance::beckmann" => vec![cook_torrance::beckmann(c(a, 0), Alpha(a[4]), a[5])],
         "cook_torrance::ggx_conductor_rgb" => three(cook_torrance::ggx_conductor_rgb(
             c(a, 0),
-            a[4],
+            Alpha(a[4]),
             ComplexIor {
                 eta: v(a, 5),
                 k: v(a, 8),
             },
         )),
-        "cook_torrance::ggx_schlick_rgb" => {
-            three(cook_torrance::ggx_schlick_rgb(c(a, 0), a[4], v(a, 5)))
-        }
+        "cook_torrance::ggx_schlick_rgb" => three(cook_torrance::ggx_schlick_rgb(
+            c(a, 0),
+            Alpha(a[4]),
+            v(a, 5),
+        )),
         "cook_torrance::ggx_dielectric" => {
-            vec![cook_torrance::ggx_dielectric(c(a, 0), a[4], a[5])]
+            vec![cook_torrance::ggx_dielectric(c(a, 0), Alpha(a[4]), a[5])]
         }
         "cook_torrance::beckmann_conductor_rgb" => three(cook_torrance::beckmann_conductor_rgb(
             c(a, 0),
-            a[4],
+            Alpha(a[4]),
             ComplexIor {
                 eta: v(a, 5),
                 k: v(a, 8),
             },
         )),
-        "cook_torrance::beckmann_schlick_rgb" => {
-            three(cook_torrance::beckmann_schlick_rgb(c(a, 0), a[4], v(a, 5)))
-        }
+        "cook_torrance::beckmann_schlick_rgb" => three(cook_torrance::beckmann_schlick_rgb(
+            c(a, 0),
+            Alpha(a[4]),
+            v(a, 5),
+        )),
         "cook_torrance::beckmann_dielectric" => {
-            vec![cook_torrance::beckmann_dielectric(c(a, 0), a[4], a[5])]
+            vec![cook_torrance::beckmann_dielectric(
+                c(a, 0),
+                Alpha(a[4]),
+                a[5],
+            )]
         }
         "sampling::cosine_hemisphere" => sample(sampling::cosine_hemisphere(a[0], a[1])),
         "sampling::cosine_hemisphere_pdf" => vec![sampling::cosine_hemisphere_pdf(v(a, 0))],

@@ -483,7 +483,9 @@ fn param(
         // A complex IOR with named parts: its eta, then its k.
         "ComplexIor<V3<T>>" => vec![vector("eta"), vector("k")],
         // The energy terms' named wrappers: one argument each.
-        "Albedo<T>" | "AverageAlbedo<T>" | "Reflectance<T>" => vec![plain(vec![name.to_string()])],
+        "Albedo<T>" | "AverageAlbedo<T>" | "Reflectance<T>" | "Alpha<T>" => {
+            vec![plain(vec![name.to_string()])]
+        }
         "implFn(T)->V3<T>" => vec![vector(name)],
         _ => {
             let ty_name = type_name(ty).ok_or_else(|| format!("parameter {name}: type {text}"))?;
