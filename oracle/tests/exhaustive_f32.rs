@@ -20,8 +20,9 @@
 //! f32 passes when y is +inf or f32::MAX (the crate caps poles and overflows at MAX).
 //!
 //! # Domain
-//! Each function's documented domain: every non-negative f32 up to +inf for the transfer
-//! functions and the tone curves (their inputs above `tonemap::MAX_INPUT` = 1e9 are clamped
+//! Each function's documented domain: every non-negative f32 up to the largest finite one for
+//! the transfer functions (+-inf give NaN there, the crate's rule 5, checked apart) and up to
+//! +inf for the tone curves (their inputs above `tonemap::MAX_INPUT` = 1e9 are clamped
 //! to it, and the reference applies that documented clamp), (0, MAX] for `f0_from_ior`.
 //! Negative inputs are a documented clamp to 0 (their result is f(0)): the full sweep checks
 //! every 1024th negative f32 (and -0, -inf, the smallest negative), not all 2^31.
@@ -71,9 +72,10 @@ struct Fun {
     /// The documented input clamp above which the result is f(clamp) (`MAX_INPUT` for the
     /// tone curves, +inf otherwise): the reference there is evaluated once.
     clamp: f64,
-    /// Part of the full sweep (the colour operators on greys are in the CI slice only: on a
-    /// grey they are the per-channel curves swept already).
-    full: bool,
+    /// Whether +-inf are clamped inputs (the tone curves clamp them like any other input,
+    /// `tonemap::sanitize`); elsewhere an infinity is outside the domain and gives NaN (the
+    /// crate's rule 5), checked by [`infinities_outside_the_domain_give_nan`].
+    infinities_clamped: bool,
 }
 
 const INF_BITS: u32 = 0x7f80_0000;
@@ -282,21 +284,22 @@ fn tm(
     reference: fn(f64) -> f64,
     mpfr: fn(&Float) -> Float,
 ) -> Fun {
+    let tone = name.starts_with("tonemap");
     Fun {
         name,
         f32,
         f32x8,
         reference,
         mpfr,
-        bits: (0, INF_BITS),
+        bits: (0, if tone { INF_BITS } else { INF_BITS - 1 }),
         negatives: true,
         bound: BOUND,
-        clamp: if name.starts_with("tonemap") {
+        clamp: if tone {
             tonemap::MAX_INPUT
         } else {
             f64::INFINITY
         },
-        full: !name.contains("(grey"),
+        infinities_clamped: tone,
     }
 }
 
@@ -322,7 +325,7 @@ fn all() -> Vec<Fun> {
         },
         Fun {
             bound: FAST_BOUND_ABOVE_1,
-            bits: (1f32.to_bits() + 1, INF_BITS),
+            bits: (1f32.to_bits() + 1, INF_BITS - 1),
             negatives: false,
             ..tm(
                 "color::srgb_oetf_fast (above 1)",
@@ -532,9 +535,32 @@ fn slice(f: &Fun, stride: u32) -> Vec<f32> {
         }
     }
     if f.negatives {
-        v.extend([-0.0, -f32::from_bits(1), -1.0, -f32::MAX, f32::NEG_INFINITY]);
+        v.extend([-0.0, -f32::from_bits(1), -1.0, -f32::MAX]);
+        if f.infinities_clamped {
+            v.push(f32::NEG_INFINITY);
+        }
     }
     v
+}
+
+/// Rule 5 of the crate's bad-input rule: where an infinity is not a clamped input (the
+/// transfer functions, `f0_from_ior`), +-inf give NaN, on `f32` and on every lane.
+#[test]
+fn infinities_outside_the_domain_give_nan() {
+    let mut checked = 0;
+    for f in all().into_iter().filter(|f| !f.infinities_clamped) {
+        for x in [f32::INFINITY, f32::NEG_INFINITY] {
+            let y = (f.f32)(x);
+            let lanes = (f.f32x8)(f32x8::splat(x)).to_array();
+            assert!(
+                y.is_nan() && lanes.iter().all(|l| l.is_nan()),
+                "{}({x}) = {y}, lanes {lanes:?}: want NaN",
+                f.name
+            );
+            checked += 1;
+        }
+    }
+    assert!(checked >= 10, "{checked}");
 }
 
 fn report(name: &str, w: &Worst, bound: f64) -> Option<String> {
@@ -576,7 +602,7 @@ fn every_f32_within_bound() {
     let only = std::env::var("EXHAUSTIVE_ONLY").ok();
     let start = std::time::Instant::now();
     let mut failures = Vec::new();
-    for f in all().into_iter().filter(|f| f.full) {
+    for f in all() {
         if only
             .as_deref()
             .is_some_and(|o| !o.split(',').any(|x| f.name.starts_with(x)))
@@ -621,9 +647,14 @@ fn every_f32_within_bound() {
             w
         });
         if f.negatives {
-            let neg: Vec<f32> = (0x8000_0000u32..=0xff80_0000)
+            let last = if f.infinities_clamped {
+                0xff80_0000u32
+            } else {
+                0xff7f_ffff
+            };
+            let neg: Vec<f32> = (0x8000_0000u32..=last)
                 .step_by(1024)
-                .chain([0x8000_0001, 0xff80_0000])
+                .chain([0x8000_0001, last])
                 .map(f32::from_bits)
                 .collect();
             eval(&f, &neg, &mut w);
