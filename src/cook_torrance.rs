@@ -21,8 +21,11 @@
 
 use crate::domain::{above_horizon, nan_where};
 use crate::fresnel;
+#[cfg(any(feature = "ggx", feature = "beckmann"))]
 use crate::fresnel::ComplexIor;
-use crate::microfacet::{Alpha, Microfacet};
+#[cfg(any(feature = "ggx", feature = "beckmann"))]
+use crate::microfacet::Alpha;
+use crate::microfacet::Microfacet;
 use crate::real::Real;
 use crate::shading::Cosines;
 use crate::vec3::V3;
@@ -61,14 +64,8 @@ pub fn half_vector<T: Real>(wo: V3<T>, wi: V3<T>) -> (V3<T>, T) {
 #[inline]
 #[must_use]
 pub fn half_cosines<T: Real>(wo: V3<T>, wi: V3<T>) -> (T, T) {
-    let s = wo + wi;
-    let len = s.length();
-    let n_dot_h = T::select(len.simd_eq(T::ZERO), T::ONE, s.z / len);
-    let bad = any_nonfinite3(wo) | any_nonfinite3(wi);
-    (
-        nan_where(bad, n_dot_h),
-        nan_where(bad, (T::HALF * len).min(T::ONE)),
-    )
+    let c = Cosines::from_local(wo, wi);
+    (c.n_dot_h, c.v_dot_h)
 }
 
 /// D(h) V(wo, wi) capped at MAX (0 where either direction is at or below the horizon, NaN

@@ -76,14 +76,14 @@
 //! 4.4 and 4.8; Burley 2012, "Physically-Based Shading at Disney" (alpha = roughness^2).
 
 use crate::cook_torrance::half_vector;
-use crate::domain::{above_horizon, in_unit, nan_unless};
+use crate::domain::{above_horizon, finite_dirs, in_unit, nan_unless, nan_where};
 use crate::error::{ParamError, require};
 use crate::ggx::{self, Ggx};
 use crate::microfacet::alpha_from_perceptual;
 use crate::real::Real;
 use crate::sampling;
 use crate::shading::{Cosines, ShadingPoint};
-use crate::vec3::V3;
+use crate::vec3::{V3, any_nonfinite3};
 
 /// F0 of the glTF 2.0 dielectric: ((1.5 - 1) / (1.5 + 1))^2 = 0.04, the index of refraction
 /// 1.5 of most dielectrics (glTF 2.0 Appendix B; Karis 2013 and Filament's default
@@ -255,14 +255,6 @@ fn kernel<T: Real>(
         channel(f.y, diffuse.y),
         channel(f.z, diffuse.z),
     )
-}
-
-/// Set where any component of either direction is NaN or infinite (a NaN tangent component
-/// would otherwise vanish in the half vector's normalization fallback, and an infinite one
-/// would normalize to a plausible axis; crate docs, "Bad input", rules 1 and 5).
-#[inline]
-fn any_nonfinite<T: Real>(a: V3<T>, b: V3<T>) -> T::Mask {
-    crate::vec3::any_nonfinite3(a) | crate::vec3::any_nonfinite3(b)
 }
 
 /// The metallic-roughness BRDF from dot products (the shader form): RGB
@@ -548,7 +540,9 @@ impl<T: Real> MetallicRoughness<T> {
             self.dielectric_f0(),
             self.dielectric_f90(),
             self.coupling,
-            any_nonfinite(wo, wi),
+            // A NaN tangent component would vanish in the half vector's normalization
+            // fallback, an infinite one normalize to a plausible axis (rules 1 and 5).
+            any_nonfinite3(wo) | any_nonfinite3(wi),
         )
     }
 
@@ -603,7 +597,7 @@ impl<T: Real> MetallicRoughness<T> {
         let p = T::select(no_specular, T::ZERO, p);
         // The selects above would turn a NaN view into a plausible probability, and only wo.z
         // reaches them: a NaN in any component of wo gives NaN.
-        nan_unless(!any_nonfinite(wo, wo), p)
+        nan_where(any_nonfinite3(wo), p)
     }
 
     /// The one-sample MIS pdf (solid angle) of [`sample`](Self::sample):
@@ -633,7 +627,7 @@ impl<T: Real> MetallicRoughness<T> {
         // specular density about h = wo for wi).
         let zero = crate::vec3::is_zero3(wo) | crate::vec3::is_zero3(wi);
         let pdf = T::select(zero, T::ZERO, lerp(p_diff, p_spec, p));
-        nan_unless(!any_nonfinite(wo, wi), pdf)
+        finite_dirs(wo, wi, pdf)
     }
 
     /// Draws wi for the view `wo` by one-sample lobe selection and returns (wi, pdf) with pdf
@@ -667,7 +661,7 @@ impl<T: Real> MetallicRoughness<T> {
         let (wi_diff, _) = sampling::cosine_hemisphere(u, u2);
         let wi = V3::select(specular, wo.mirror(m), wi_diff);
         // A diffuse wi does not depend on wo: a NaN view must still give a NaN direction.
-        let bad = any_nonfinite(wo, wo);
+        let bad = any_nonfinite3(wo);
         let nan = T::splat(f64::NAN);
         let wi = V3::new(
             T::select(bad, nan, wi.x),
