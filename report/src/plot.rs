@@ -22,6 +22,25 @@ use plotters::style::{FontDesc, FontFamily, FontStyle, FontTransform, register_f
 type Res<T = ()> = Result<T, Box<dyn Error>>;
 type Area<'a> = DrawingArea<BitMapBackend<'a>, Shift>;
 
+/// Draws a `w` x `h` picture with `draw` into an RGB buffer and writes it as an 8-bit RGB PNG
+/// at `path` with the `png` crate (plotters' own encoder pulls in the whole `image` crate).
+fn save(path: &Path, (w, h): (u32, u32), draw: impl FnOnce(&Area) -> Res) -> Res {
+    let mut buf = vec![0u8; w as usize * h as usize * 3];
+    {
+        let root = BitMapBackend::with_buffer(&mut buf, (w, h)).into_drawing_area();
+        draw(&root)?;
+        root.present()?;
+    }
+    let file = std::io::BufWriter::new(std::fs::File::create(path)?);
+    let mut enc = png::Encoder::new(file, w, h);
+    enc.set_color(png::ColorType::Rgb);
+    enc.set_depth(png::BitDepth::Eight);
+    let mut writer = enc.write_header()?;
+    writer.write_image_data(&buf)?;
+    writer.finish()?;
+    Ok(())
+}
+
 /// The family name the bundled fonts are registered under, distinct from the generic
 /// `sans-serif` so that nothing else registered in `plotters` collides with it.
 const FAMILY: &str = "DejaVu Sans (report)";
@@ -959,345 +978,345 @@ pub fn pareto(
     fonts_ready()?;
     const W: i32 = 1400;
     const H: i32 = 900;
-    let root = BitMapBackend::new(path, (W as u32, H as u32)).into_drawing_area();
-    root.fill(&WHITE)?;
+    save(path, (W as u32, H as u32), |root| {
+        root.fill(&WHITE)?;
 
-    let mut families: Vec<&str> = Vec::new();
-    for p in points {
-        if !families.contains(&p.family.as_str()) {
-            families.push(&p.family);
-        }
-    }
-    let fam_index = |name: &str| families.iter().position(|f| *f == name).unwrap_or(0);
-
-    let shown: Vec<&ParetoPoint> = points
-        .iter()
-        .filter(|p| p.x.is_finite() && p.x > 0.0 && p.y < f64::INFINITY)
-        .collect();
-    let skipped = points.len() - shown.len();
-    let min_pos = shown
-        .iter()
-        .map(|p| p.y)
-        .filter(|&y| y > 0.0)
-        .fold(f64::INFINITY, f64::min);
-    let n_floor = shown.iter().filter(|p| p.y <= 0.0).count();
-    let floor = if min_pos.is_finite() {
-        1e-9f64.min(10f64.powf(min_pos.log10().floor() - 1.0))
-    } else {
-        1e-9
-    };
-    let yv = |p: &ParetoPoint| if p.y > 0.0 { p.y } else { floor };
-
-    let (mut xlo, mut xhi, mut ylo, mut yhi) = (
-        f64::INFINITY,
-        f64::NEG_INFINITY,
-        f64::INFINITY,
-        f64::NEG_INFINITY,
-    );
-    for p in &shown {
-        xlo = xlo.min(p.x);
-        xhi = xhi.max(p.x);
-        ylo = ylo.min(yv(p));
-        yhi = yhi.max(yv(p));
-    }
-    // Pad by a factor 2 each way, less (down to 1.25) when the data spans under 3 decades.
-    let pad = |lo: f64, hi: f64| 10f64.powf(0.1 * (hi / lo).log10()).clamp(1.25, 2.0);
-    let xa = if shown.is_empty() {
-        Axis::new(1.0, 100.0, true)
-    } else {
-        let f = pad(xlo, xhi);
-        Axis::new(xlo / f, xhi * f, true)
-    };
-    let ya = if shown.is_empty() {
-        Axis::new(1e-9, 1.0, true)
-    } else {
-        let f = pad(ylo, yhi);
-        Axis::new(ylo / f, yhi * f, true)
-    };
-
-    // Legend panel: families, then notes.
-    let leg_tf = Tf::new(15.0, TEXT);
-    let note_tf = Tf::new(13.0, NOTE);
-    let mut panel_w = 250;
-    for f in &families {
-        panel_w = panel_w.max(width(&root, f, &leg_tf)? + 50);
-    }
-    let panel_w = panel_w.min(380);
-    let left = left_margin(&root, &ya)?;
-    let frame = Frame {
-        x0: left,
-        y0: 62,
-        x1: W - panel_w - 30,
-        y1: H - 80,
-        xa,
-        ya,
-    };
-
-    title_text(&root, title, W)?;
-    draw_axes(&root, &frame, x_label, y_label)?;
-
-    let marker_r = 6;
-    let pix: Vec<(f64, f64)> = shown
-        .iter()
-        .map(|p| (frame.px(p.x), frame.py(yv(p))))
-        .collect();
-
-    // Floor line for exact (y <= 0) points.
-    if n_floor > 0 {
-        let y = frame.py(floor).round() as i32;
-        area_dashed_hline(&root, &frame, y)?;
-        put(
-            &root,
-            &format!("y ≤ 0 drawn at {}", fmt_sig(floor, 2)),
-            (frame.x1 - 6, y - 4),
-            &Tf::new(12.0, NOTE),
-            Ha::Right,
-            Va::Baseline,
-        )?;
-    }
-
-    // Pareto fronts.
-    for (fi, fam) in families.iter().enumerate() {
-        let mut pts: Vec<(f64, f64)> = shown
-            .iter()
-            .filter(|p| p.family == *fam)
-            .map(|p| (p.x, yv(p)))
-            .collect();
-        pts.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.1.total_cmp(&b.1)));
-        let mut front = Vec::new();
-        let mut best = f64::INFINITY;
-        for (x, y) in pts {
-            if y < best {
-                best = y;
-                front.push((x, y));
+        let mut families: Vec<&str> = Vec::new();
+        for p in points {
+            if !families.contains(&p.family.as_str()) {
+                families.push(&p.family);
             }
         }
-        if front.len() >= 2 {
-            let c = palette(fi);
-            let st = ShapeStyle {
-                color: c.mix(0.45),
-                filled: false,
-                stroke_width: 2,
-            };
-            polyline(&root, &frame, &front, st, Some((7, 5)))?;
-        }
-    }
+        let fam_index = |name: &str| families.iter().position(|f| *f == name).unwrap_or(0);
 
-    // Markers.
-    for (p, &(x, y)) in shown.iter().zip(&pix) {
-        let fi = fam_index(&p.family);
-        marker(&root, fi, round_pt((x, y)), marker_r, palette(fi))?;
-    }
+        let shown: Vec<&ParetoPoint> = points
+            .iter()
+            .filter(|p| p.x.is_finite() && p.x > 0.0 && p.y < f64::INFINITY)
+            .collect();
+        let skipped = points.len() - shown.len();
+        let min_pos = shown
+            .iter()
+            .map(|p| p.y)
+            .filter(|&y| y > 0.0)
+            .fold(f64::INFINITY, f64::min);
+        let n_floor = shown.iter().filter(|p| p.y <= 0.0).count();
+        let floor = if min_pos.is_finite() {
+            1e-9f64.min(10f64.powf(min_pos.log10().floor() - 1.0))
+        } else {
+            1e-9
+        };
+        let yv = |p: &ParetoPoint| if p.y > 0.0 { p.y } else { floor };
 
-    // Labels, most crowded points first.
-    let lab_tf = Tf::new(12.0, TEXT);
-    let bounds = Bx {
-        l: f64::from(frame.x0 + 2),
-        t: f64::from(frame.y0 + 2),
-        r: f64::from(frame.x1 - 2),
-        b: f64::from(frame.y1 - 2),
-    };
-    let mr = f64::from(marker_r) + 1.0;
-    let mut obstacles: Vec<Bx> = pix
-        .iter()
-        .map(|&(x, y)| Bx {
-            l: x - mr,
-            t: y - mr,
-            r: x + mr,
-            b: y + mr,
-        })
-        .collect();
-    let mut order: Vec<usize> = (0..shown.len()).collect();
-    let crowd = |i: usize| {
-        pix.iter()
-            .filter(|q| (q.0 - pix[i].0).hypot(q.1 - pix[i].1) < 70.0)
-            .count()
-    };
-    order.sort_by_key(|&i| std::cmp::Reverse(crowd(i)));
-    let dirs: [f64; 12] = [
-        0.0, 180.0, -35.0, 35.0, -145.0, 145.0, -90.0, 90.0, -60.0, 60.0, -120.0, 120.0,
-    ];
-    let mut placed: Vec<(usize, Bx, f64)> = Vec::new();
-    for i in order {
-        let label = &shown[i].form;
-        if label.is_empty() {
-            continue;
+        let (mut xlo, mut xhi, mut ylo, mut yhi) = (
+            f64::INFINITY,
+            f64::NEG_INFINITY,
+            f64::INFINITY,
+            f64::NEG_INFINITY,
+        );
+        for p in &shown {
+            xlo = xlo.min(p.x);
+            xhi = xhi.max(p.x);
+            ylo = ylo.min(yv(p));
+            yhi = yhi.max(yv(p));
         }
-        let w = f64::from(width(&root, label, &lab_tf)?) + 4.0;
-        let h = f64::from(lab_tf.height()) + 2.0;
-        let (px, py) = pix[i];
-        let mut best: Option<(f64, Bx, f64)> = None;
-        for (ri, r) in [mr + 3.0, mr + 14.0, mr + 28.0, mr + 46.0]
-            .into_iter()
-            .enumerate()
-        {
-            for (di, deg) in dirs.iter().enumerate() {
-                let (s, c) = deg.to_radians().sin_cos();
-                let (ax, ay) = (px + r * c, py + r * s);
-                let l = if c > 0.3 {
-                    ax
-                } else if c < -0.3 {
-                    ax - w
-                } else {
-                    ax - w / 2.0
-                };
-                let t = if s > 0.3 {
-                    ay
-                } else if s < -0.3 {
-                    ay - h
-                } else {
-                    ay - h / 2.0
-                };
-                let bx = Bx {
-                    l,
-                    t,
-                    r: l + w,
-                    b: t + h,
-                };
-                let hit: f64 = obstacles.iter().map(|o| bx.overlap(o)).sum();
-                let outside = bx.area() - bx.overlap(&bounds);
-                let cost = hit + 10.0 * outside + ri as f64 * 30.0 + di as f64 * 0.5;
-                if best.is_none_or(|b| cost < b.0) {
-                    best = Some((cost, bx, r));
+        // Pad by a factor 2 each way, less (down to 1.25) when the data spans under 3 decades.
+        let pad = |lo: f64, hi: f64| 10f64.powf(0.1 * (hi / lo).log10()).clamp(1.25, 2.0);
+        let xa = if shown.is_empty() {
+            Axis::new(1.0, 100.0, true)
+        } else {
+            let f = pad(xlo, xhi);
+            Axis::new(xlo / f, xhi * f, true)
+        };
+        let ya = if shown.is_empty() {
+            Axis::new(1e-9, 1.0, true)
+        } else {
+            let f = pad(ylo, yhi);
+            Axis::new(ylo / f, yhi * f, true)
+        };
+
+        // Legend panel: families, then notes.
+        let leg_tf = Tf::new(15.0, TEXT);
+        let note_tf = Tf::new(13.0, NOTE);
+        let mut panel_w = 250;
+        for f in &families {
+            panel_w = panel_w.max(width(&root, f, &leg_tf)? + 50);
+        }
+        let panel_w = panel_w.min(380);
+        let left = left_margin(&root, &ya)?;
+        let frame = Frame {
+            x0: left,
+            y0: 62,
+            x1: W - panel_w - 30,
+            y1: H - 80,
+            xa,
+            ya,
+        };
+
+        title_text(&root, title, W)?;
+        draw_axes(&root, &frame, x_label, y_label)?;
+
+        let marker_r = 6;
+        let pix: Vec<(f64, f64)> = shown
+            .iter()
+            .map(|p| (frame.px(p.x), frame.py(yv(p))))
+            .collect();
+
+        // Floor line for exact (y <= 0) points.
+        if n_floor > 0 {
+            let y = frame.py(floor).round() as i32;
+            area_dashed_hline(&root, &frame, y)?;
+            put(
+                &root,
+                &format!("y ≤ 0 drawn at {}", fmt_sig(floor, 2)),
+                (frame.x1 - 6, y - 4),
+                &Tf::new(12.0, NOTE),
+                Ha::Right,
+                Va::Baseline,
+            )?;
+        }
+
+        // Pareto fronts.
+        for (fi, fam) in families.iter().enumerate() {
+            let mut pts: Vec<(f64, f64)> = shown
+                .iter()
+                .filter(|p| p.family == *fam)
+                .map(|p| (p.x, yv(p)))
+                .collect();
+            pts.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.1.total_cmp(&b.1)));
+            let mut front = Vec::new();
+            let mut best = f64::INFINITY;
+            for (x, y) in pts {
+                if y < best {
+                    best = y;
+                    front.push((x, y));
                 }
             }
-        }
-        if let Some((_, bx, r)) = best {
-            obstacles.push(bx);
-            placed.push((i, bx, r));
-        }
-    }
-    for (i, bx, r) in placed {
-        let (px, py) = pix[i];
-        let fi = fam_index(&shown[i].family);
-        let c = darken(palette(fi), 0.3);
-        if r > mr + 4.0 {
-            // Leader from the marker's edge to the nearest point of the label box.
-            let nx = px.clamp(bx.l, bx.r);
-            let ny = py.clamp(bx.t, bx.b);
-            let d = (nx - px).hypot(ny - py);
-            if d > mr {
-                let sx = px + (nx - px) / d * mr;
-                let sy = py + (ny - py) / d * mr;
-                root.draw(&PathElement::new(
-                    vec![round_pt((sx, sy)), round_pt((nx, ny))],
-                    style(RGBColor(150, 150, 150), 1, false),
-                ))?;
+            if front.len() >= 2 {
+                let c = palette(fi);
+                let st = ShapeStyle {
+                    color: c.mix(0.45),
+                    filled: false,
+                    stroke_width: 2,
+                };
+                polyline(&root, &frame, &front, st, Some((7, 5)))?;
             }
         }
-        root.draw(&Rectangle::new(
-            [round_pt((bx.l, bx.t)), round_pt((bx.r - 1.0, bx.b - 1.0))],
-            ShapeStyle {
-                color: WHITE.mix(0.75),
-                filled: true,
-                stroke_width: 0,
-            },
-        ))?;
-        put(
-            &root,
-            &shown[i].form,
-            round_pt((bx.l + 2.0, bx.t + 2.0)),
-            &Tf { color: c, ..lab_tf },
-            Ha::Left,
-            Va::Top,
-        )?;
-    }
 
-    // Legend panel: the notes are laid out first so that the family list can be fitted above.
-    let px0 = frame.x1 + 24;
-    let mut notes = vec![(
+        // Markers.
+        for (p, &(x, y)) in shown.iter().zip(&pix) {
+            let fi = fam_index(&p.family);
+            marker(&root, fi, round_pt((x, y)), marker_r, palette(fi))?;
+        }
+
+        // Labels, most crowded points first.
+        let lab_tf = Tf::new(12.0, TEXT);
+        let bounds = Bx {
+            l: f64::from(frame.x0 + 2),
+            t: f64::from(frame.y0 + 2),
+            r: f64::from(frame.x1 - 2),
+            b: f64::from(frame.y1 - 2),
+        };
+        let mr = f64::from(marker_r) + 1.0;
+        let mut obstacles: Vec<Bx> = pix
+            .iter()
+            .map(|&(x, y)| Bx {
+                l: x - mr,
+                t: y - mr,
+                r: x + mr,
+                b: y + mr,
+            })
+            .collect();
+        let mut order: Vec<usize> = (0..shown.len()).collect();
+        let crowd = |i: usize| {
+            pix.iter()
+                .filter(|q| (q.0 - pix[i].0).hypot(q.1 - pix[i].1) < 70.0)
+                .count()
+        };
+        order.sort_by_key(|&i| std::cmp::Reverse(crowd(i)));
+        let dirs: [f64; 12] = [
+            0.0, 180.0, -35.0, 35.0, -145.0, 145.0, -90.0, 90.0, -60.0, 60.0, -120.0, 120.0,
+        ];
+        let mut placed: Vec<(usize, Bx, f64)> = Vec::new();
+        for i in order {
+            let label = &shown[i].form;
+            if label.is_empty() {
+                continue;
+            }
+            let w = f64::from(width(&root, label, &lab_tf)?) + 4.0;
+            let h = f64::from(lab_tf.height()) + 2.0;
+            let (px, py) = pix[i];
+            let mut best: Option<(f64, Bx, f64)> = None;
+            for (ri, r) in [mr + 3.0, mr + 14.0, mr + 28.0, mr + 46.0]
+                .into_iter()
+                .enumerate()
+            {
+                for (di, deg) in dirs.iter().enumerate() {
+                    let (s, c) = deg.to_radians().sin_cos();
+                    let (ax, ay) = (px + r * c, py + r * s);
+                    let l = if c > 0.3 {
+                        ax
+                    } else if c < -0.3 {
+                        ax - w
+                    } else {
+                        ax - w / 2.0
+                    };
+                    let t = if s > 0.3 {
+                        ay
+                    } else if s < -0.3 {
+                        ay - h
+                    } else {
+                        ay - h / 2.0
+                    };
+                    let bx = Bx {
+                        l,
+                        t,
+                        r: l + w,
+                        b: t + h,
+                    };
+                    let hit: f64 = obstacles.iter().map(|o| bx.overlap(o)).sum();
+                    let outside = bx.area() - bx.overlap(&bounds);
+                    let cost = hit + 10.0 * outside + ri as f64 * 30.0 + di as f64 * 0.5;
+                    if best.is_none_or(|b| cost < b.0) {
+                        best = Some((cost, bx, r));
+                    }
+                }
+            }
+            if let Some((_, bx, r)) = best {
+                obstacles.push(bx);
+                placed.push((i, bx, r));
+            }
+        }
+        for (i, bx, r) in placed {
+            let (px, py) = pix[i];
+            let fi = fam_index(&shown[i].family);
+            let c = darken(palette(fi), 0.3);
+            if r > mr + 4.0 {
+                // Leader from the marker's edge to the nearest point of the label box.
+                let nx = px.clamp(bx.l, bx.r);
+                let ny = py.clamp(bx.t, bx.b);
+                let d = (nx - px).hypot(ny - py);
+                if d > mr {
+                    let sx = px + (nx - px) / d * mr;
+                    let sy = py + (ny - py) / d * mr;
+                    root.draw(&PathElement::new(
+                        vec![round_pt((sx, sy)), round_pt((nx, ny))],
+                        style(RGBColor(150, 150, 150), 1, false),
+                    ))?;
+                }
+            }
+            root.draw(&Rectangle::new(
+                [round_pt((bx.l, bx.t)), round_pt((bx.r - 1.0, bx.b - 1.0))],
+                ShapeStyle {
+                    color: WHITE.mix(0.75),
+                    filled: true,
+                    stroke_width: 0,
+                },
+            ))?;
+            put(
+                &root,
+                &shown[i].form,
+                round_pt((bx.l + 2.0, bx.t + 2.0)),
+                &Tf { color: c, ..lab_tf },
+                Ha::Left,
+                Va::Top,
+            )?;
+        }
+
+        // Legend panel: the notes are laid out first so that the family list can be fitted above.
+        let px0 = frame.x1 + 24;
+        let mut notes = vec![(
         "Pareto front of a family: its forms that no other form of the family beats in both time \
          and error"
             .to_string(),
         true,
     )];
-    if n_floor > 0 {
-        notes.push((
-            format!(
-                "{n_floor} point{} with error ≤ 0 (exact) drawn at {} on the dashed floor line",
-                if n_floor == 1 { "" } else { "s" },
-                fmt_sig(floor, 2)
-            ),
-            false,
-        ));
-    }
-    if skipped > 0 {
-        notes.push((
-            format!(
-                "{skipped} point{} not drawn: a value is not finite or x is not positive",
-                if skipped == 1 { "" } else { "s" }
-            ),
-            false,
-        ));
-    }
-    if shown.is_empty() {
-        notes.push(("no data".to_string(), false));
-    }
-    let mut note_lines = Vec::new();
-    for (note, indented) in &notes {
-        let x = if *indented { px0 + 28 } else { px0 };
-        note_lines.push((x, wrap(&root, note, &note_tf, panel_w - (x - px0) - 8)?));
-    }
-    let notes_h: i32 = note_lines
-        .iter()
-        .map(|(_, l)| l.len() as i32 * note_tf.line() + 12)
-        .sum();
+        if n_floor > 0 {
+            notes.push((
+                format!(
+                    "{n_floor} point{} with error ≤ 0 (exact) drawn at {} on the dashed floor line",
+                    if n_floor == 1 { "" } else { "s" },
+                    fmt_sig(floor, 2)
+                ),
+                false,
+            ));
+        }
+        if skipped > 0 {
+            notes.push((
+                format!(
+                    "{skipped} point{} not drawn: a value is not finite or x is not positive",
+                    if skipped == 1 { "" } else { "s" }
+                ),
+                false,
+            ));
+        }
+        if shown.is_empty() {
+            notes.push(("no data".to_string(), false));
+        }
+        let mut note_lines = Vec::new();
+        for (note, indented) in &notes {
+            let x = if *indented { px0 + 28 } else { px0 };
+            note_lines.push((x, wrap(&root, note, &note_tf, panel_w - (x - px0) - 8)?));
+        }
+        let notes_h: i32 = note_lines
+            .iter()
+            .map(|(_, l)| l.len() as i32 * note_tf.line() + 12)
+            .sum();
 
-    let mut y = frame.y0 + 6;
-    put(
-        &root,
-        "Families",
-        (px0, y),
-        &Tf::new(16.0, TEXT).bold(),
-        Ha::Left,
-        Va::Top,
-    )?;
-    y += 28;
-    let avail = (H - 16 - notes_h - 8 - y).max(14);
-    let nf = families.len().max(1) as i32;
-    let row_h = (avail / nf).clamp(14, 24);
-    let fit = (avail / row_h).max(1) as usize;
-    let listed = if families.len() > fit {
-        fit - 1
-    } else {
-        families.len()
-    };
-    let fam_tf = Tf::new((f64::from(row_h) * 0.64).clamp(10.0, 15.0), TEXT);
-    let leg_r = (row_h / 3).clamp(4, marker_r);
-    for (fi, f) in families.iter().enumerate().take(listed) {
-        marker(&root, fi, (px0 + 10, y), leg_r, palette(fi))?;
-        let name = ellipsize(&root, f, &fam_tf, panel_w - 36)?;
-        put(&root, &name, (px0 + 26, y), &fam_tf, Ha::Left, Va::Center)?;
-        y += row_h;
-    }
-    if listed < families.len() {
-        let more = format!("… and {} more", families.len() - listed);
-        put(&root, &more, (px0 + 26, y), &fam_tf, Ha::Left, Va::Center)?;
-        y += row_h;
-    }
-    y += 8;
-    root.draw(&DashedPathElement::new(
-        vec![(px0, y), (px0 + 20, y)],
-        7,
-        5,
-        ShapeStyle {
-            color: RGBColor(110, 110, 110).mix(0.8),
-            filled: false,
-            stroke_width: 2,
-        },
-    ))?;
-    for (k, (x, lines)) in note_lines.iter().enumerate() {
-        if k > 0 {
-            y += 6;
+        let mut y = frame.y0 + 6;
+        put(
+            &root,
+            "Families",
+            (px0, y),
+            &Tf::new(16.0, TEXT).bold(),
+            Ha::Left,
+            Va::Top,
+        )?;
+        y += 28;
+        let avail = (H - 16 - notes_h - 8 - y).max(14);
+        let nf = families.len().max(1) as i32;
+        let row_h = (avail / nf).clamp(14, 24);
+        let fit = (avail / row_h).max(1) as usize;
+        let listed = if families.len() > fit {
+            fit - 1
+        } else {
+            families.len()
+        };
+        let fam_tf = Tf::new((f64::from(row_h) * 0.64).clamp(10.0, 15.0), TEXT);
+        let leg_r = (row_h / 3).clamp(4, marker_r);
+        for (fi, f) in families.iter().enumerate().take(listed) {
+            marker(&root, fi, (px0 + 10, y), leg_r, palette(fi))?;
+            let name = ellipsize(&root, f, &fam_tf, panel_w - 36)?;
+            put(&root, &name, (px0 + 26, y), &fam_tf, Ha::Left, Va::Center)?;
+            y += row_h;
         }
-        for (j, l) in lines.iter().enumerate() {
-            let yy = y + j as i32 * note_tf.line();
-            put(&root, l, (*x, yy), &note_tf, Ha::Left, Va::Center)?;
+        if listed < families.len() {
+            let more = format!("… and {} more", families.len() - listed);
+            put(&root, &more, (px0 + 26, y), &fam_tf, Ha::Left, Va::Center)?;
+            y += row_h;
         }
-        y += lines.len() as i32 * note_tf.line() + 6;
-    }
-    root.present()?;
-    Ok(())
+        y += 8;
+        root.draw(&DashedPathElement::new(
+            vec![(px0, y), (px0 + 20, y)],
+            7,
+            5,
+            ShapeStyle {
+                color: RGBColor(110, 110, 110).mix(0.8),
+                filled: false,
+                stroke_width: 2,
+            },
+        ))?;
+        for (k, (x, lines)) in note_lines.iter().enumerate() {
+            if k > 0 {
+                y += 6;
+            }
+            for (j, l) in lines.iter().enumerate() {
+                let yy = y + j as i32 * note_tf.line();
+                put(&root, l, (*x, yy), &note_tf, Ha::Left, Va::Center)?;
+            }
+            y += lines.len() as i32 * note_tf.line() + 6;
+        }
+        Ok(())
+    })
 }
 
 /// A grey dashed horizontal line across the frame at pixel row `y`.
@@ -1417,150 +1436,150 @@ pub fn heatmap(
     let w = (left + gw + right).max(title_w + 40).max(500);
     let h = top + gh + bottom;
 
-    let root = BitMapBackend::new(path, (w as u32, h as u32)).into_drawing_area();
-    root.fill(&WHITE)?;
-    title_text(&root, title, w)?;
-    let (gx0, gy0) = (left, top);
-    let (gx1, gy1) = (gx0 + gw, gy0 + gh);
+    save(path, (w as u32, h as u32), |root| {
+        root.fill(&WHITE)?;
+        title_text(&root, title, w)?;
+        let (gx0, gy0) = (left, top);
+        let (gx1, gy1) = (gx0 + gw, gy0 + gh);
 
-    let show_values = nx <= 12 && ny <= 12;
-    let mut vsize = (f64::from(cw) / 4.5).clamp(9.0, 18.0);
-    if show_values {
-        // Shrink the value font until the widest value fits its cell.
-        let mut widest = String::new();
-        let mut ww = 0;
-        for v in values.iter().flatten() {
-            let s = fmt_sig(*v, 3);
-            let sw = width(&root, &s, &Tf::new(vsize, TEXT))?;
-            if sw > ww {
-                ww = sw;
-                widest = s;
+        let show_values = nx <= 12 && ny <= 12;
+        let mut vsize = (f64::from(cw) / 4.5).clamp(9.0, 18.0);
+        if show_values {
+            // Shrink the value font until the widest value fits its cell.
+            let mut widest = String::new();
+            let mut ww = 0;
+            for v in values.iter().flatten() {
+                let s = fmt_sig(*v, 3);
+                let sw = width(&root, &s, &Tf::new(vsize, TEXT))?;
+                if sw > ww {
+                    ww = sw;
+                    widest = s;
+                }
+            }
+            while vsize > 8.0 && width(&root, &widest, &Tf::new(vsize, TEXT))? > cw - 6 {
+                vsize -= 1.0;
             }
         }
-        while vsize > 8.0 && width(&root, &widest, &Tf::new(vsize, TEXT))? > cw - 6 {
-            vsize -= 1.0;
-        }
-    }
-    for (iy, row) in values.iter().enumerate() {
-        for (ix, &v) in row.iter().enumerate() {
-            let x0 = gx0 + ix as i32 * cw;
-            let y1 = gy1 - iy as i32 * ch;
-            let c = if v.is_nan() {
-                RGBColor(190, 190, 190)
-            } else {
-                viridis(t_of(v))
-            };
-            root.draw(&Rectangle::new(
-                [(x0, y1 - ch), (x0 + cw, y1)],
-                style(c, 1, true),
-            ))?;
-            if show_values {
-                let s = fmt_sig(v, 3);
-                let tf = Tf::new(vsize, contrast(c));
-                if width(&root, &s, &tf)? <= cw - 4 && tf.height() <= ch - 2 {
-                    put(
-                        &root,
-                        &s,
-                        (x0 + cw / 2, y1 - ch / 2),
-                        &tf,
-                        Ha::Center,
-                        Va::Center,
-                    )?;
+        for (iy, row) in values.iter().enumerate() {
+            for (ix, &v) in row.iter().enumerate() {
+                let x0 = gx0 + ix as i32 * cw;
+                let y1 = gy1 - iy as i32 * ch;
+                let c = if v.is_nan() {
+                    RGBColor(190, 190, 190)
+                } else {
+                    viridis(t_of(v))
+                };
+                root.draw(&Rectangle::new(
+                    [(x0, y1 - ch), (x0 + cw, y1)],
+                    style(c, 1, true),
+                ))?;
+                if show_values {
+                    let s = fmt_sig(v, 3);
+                    let tf = Tf::new(vsize, contrast(c));
+                    if width(&root, &s, &tf)? <= cw - 4 && tf.height() <= ch - 2 {
+                        put(
+                            &root,
+                            &s,
+                            (x0 + cw / 2, y1 - ch / 2),
+                            &tf,
+                            Ha::Center,
+                            Va::Center,
+                        )?;
+                    }
                 }
             }
         }
-    }
-    root.draw(&Rectangle::new(
-        [(gx0, gy0), (gx1, gy1)],
-        style(TEXT, 1, false),
-    ))?;
+        root.draw(&Rectangle::new(
+            [(gx0, gy0), (gx1, gy1)],
+            style(TEXT, 1, false),
+        ))?;
 
-    // Column ticks: every k-th when the labels are wider than the cells.
-    let kx = ((xtw + 8) as f64 / f64::from(cw)).ceil().max(1.0) as usize;
-    for (ix, l) in xl.iter().enumerate() {
-        let x = gx0 + ix as i32 * cw + cw / 2;
-        root.draw(&PathElement::new(
-            vec![(x, gy1), (x, gy1 + 5)],
-            style(TEXT, 1, false),
-        ))?;
-        if ix % kx == 0 {
-            put(&root, l, (x, gy1 + 11), &tick_tf, Ha::Center, Va::Top)?;
+        // Column ticks: every k-th when the labels are wider than the cells.
+        let kx = ((xtw + 8) as f64 / f64::from(cw)).ceil().max(1.0) as usize;
+        for (ix, l) in xl.iter().enumerate() {
+            let x = gx0 + ix as i32 * cw + cw / 2;
+            root.draw(&PathElement::new(
+                vec![(x, gy1), (x, gy1 + 5)],
+                style(TEXT, 1, false),
+            ))?;
+            if ix % kx == 0 {
+                put(&root, l, (x, gy1 + 11), &tick_tf, Ha::Center, Va::Top)?;
+            }
         }
-    }
-    let ky = ((tick_tf.height() + 4) as f64 / f64::from(ch))
-        .ceil()
-        .max(1.0) as usize;
-    for (iy, l) in yl.iter().enumerate() {
-        let y = gy1 - iy as i32 * ch - ch / 2;
-        root.draw(&PathElement::new(
-            vec![(gx0 - 5, y), (gx0, y)],
-            style(TEXT, 1, false),
-        ))?;
-        if iy % ky == 0 {
-            put(&root, l, (gx0 - 10, y), &tick_tf, Ha::Right, Va::Center)?;
+        let ky = ((tick_tf.height() + 4) as f64 / f64::from(ch))
+            .ceil()
+            .max(1.0) as usize;
+        for (iy, l) in yl.iter().enumerate() {
+            let y = gy1 - iy as i32 * ch - ch / 2;
+            root.draw(&PathElement::new(
+                vec![(gx0 - 5, y), (gx0, y)],
+                style(TEXT, 1, false),
+            ))?;
+            if iy % ky == 0 {
+                put(&root, l, (gx0 - 10, y), &tick_tf, Ha::Right, Va::Center)?;
+            }
         }
-    }
-    put(
-        &root,
-        x_label,
-        ((gx0 + gx1) / 2, gy1 + 11 + tick_tf.height() + 16),
-        &label_tf,
-        Ha::Center,
-        Va::Top,
-    )?;
-    let ylab = ellipsize(&root, y_label, &label_tf, gh.max(200))?;
-    put_vertical(
-        &root,
-        &ylab,
-        (gx0 - 10 - ytw - 14 - label_tf.height() / 2, (gy0 + gy1) / 2),
-        &label_tf,
-    )?;
+        put(
+            &root,
+            x_label,
+            ((gx0 + gx1) / 2, gy1 + 11 + tick_tf.height() + 16),
+            &label_tf,
+            Ha::Center,
+            Va::Top,
+        )?;
+        let ylab = ellipsize(&root, y_label, &label_tf, gh.max(200))?;
+        put_vertical(
+            &root,
+            &ylab,
+            (gx0 - 10 - ytw - 14 - label_tf.height() / 2, (gy0 + gy1) / 2),
+            &label_tf,
+        )?;
 
-    // Colour bar.
-    let bx0 = gx1 + 30;
-    let bx1 = bx0 + 26;
-    for y in gy0..=gy1 {
-        let t = f64::from(gy1 - y) / f64::from(gh.max(1));
-        root.draw(&PathElement::new(
-            vec![(bx0, y), (bx1, y)],
-            style(viridis(t), 1, false),
-        ))?;
-    }
-    root.draw(&Rectangle::new(
-        [(bx0, gy0), (bx1, gy1)],
-        style(TEXT, 1, false),
-    ))?;
-    for (v, l) in &bar_ticks {
-        let y = (f64::from(gy1) - t_of(*v) * f64::from(gh)).round() as i32;
-        root.draw(&PathElement::new(
-            vec![(bx1, y), (bx1 + 5, y)],
+        // Colour bar.
+        let bx0 = gx1 + 30;
+        let bx1 = bx0 + 26;
+        for y in gy0..=gy1 {
+            let t = f64::from(gy1 - y) / f64::from(gh.max(1));
+            root.draw(&PathElement::new(
+                vec![(bx0, y), (bx1, y)],
+                style(viridis(t), 1, false),
+            ))?;
+        }
+        root.draw(&Rectangle::new(
+            [(bx0, gy0), (bx1, gy1)],
             style(TEXT, 1, false),
         ))?;
-        put(&root, l, (bx1 + 10, y), &tick_tf, Ha::Left, Va::Center)?;
-    }
-    let cbl = ellipsize(&root, colorbar_label, &label_tf, gh.max(200))?;
-    put_vertical(
-        &root,
-        &cbl,
-        (bx1 + 10 + btw + 14 + label_tf.height() / 2, (gy0 + gy1) / 2),
-        &label_tf,
-    )?;
-    let mut notes = Vec::new();
-    if any_nan {
-        notes.push("grey: no value (NaN)");
-    }
-    if any_out {
-        notes.push("values outside the bar's range take its end colours");
-    }
-    let mut y = gy1 + 14;
-    for n in notes {
-        for l in wrap(&root, n, &note_tf, w - bx0 - 10)? {
-            put(&root, &l, (bx0, y), &note_tf, Ha::Left, Va::Top)?;
-            y += note_tf.line();
+        for (v, l) in &bar_ticks {
+            let y = (f64::from(gy1) - t_of(*v) * f64::from(gh)).round() as i32;
+            root.draw(&PathElement::new(
+                vec![(bx1, y), (bx1 + 5, y)],
+                style(TEXT, 1, false),
+            ))?;
+            put(&root, l, (bx1 + 10, y), &tick_tf, Ha::Left, Va::Center)?;
         }
-    }
-    root.present()?;
-    Ok(())
+        let cbl = ellipsize(&root, colorbar_label, &label_tf, gh.max(200))?;
+        put_vertical(
+            &root,
+            &cbl,
+            (bx1 + 10 + btw + 14 + label_tf.height() / 2, (gy0 + gy1) / 2),
+            &label_tf,
+        )?;
+        let mut notes = Vec::new();
+        if any_nan {
+            notes.push("grey: no value (NaN)");
+        }
+        if any_out {
+            notes.push("values outside the bar's range take its end colours");
+        }
+        let mut y = gy1 + 14;
+        for n in notes {
+            for l in wrap(&root, n, &note_tf, w - bx0 - 10)? {
+                put(&root, &l, (bx0, y), &note_tf, Ha::Left, Va::Top)?;
+                y += note_tf.line();
+            }
+        }
+        Ok(())
+    })
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -1590,151 +1609,151 @@ pub fn curves(
     fonts_ready()?;
     const W: i32 = 1400;
     const H: i32 = 900;
-    let root = BitMapBackend::new(path, (W as u32, H as u32)).into_drawing_area();
-    root.fill(&WHITE)?;
+    save(path, (W as u32, H as u32), |root| {
+        root.fill(&WHITE)?;
 
-    let (mut xlo, mut xhi) = (f64::INFINITY, f64::NEG_INFINITY);
-    let (mut ylo, mut yhi) = (f64::INFINITY, f64::NEG_INFINITY);
-    for (_, pts) in series {
-        for &(x, y) in pts {
-            if x.is_finite() && (!log_x || x > 0.0) && y.is_finite() {
-                xlo = xlo.min(x);
-                xhi = xhi.max(x);
-                ylo = ylo.min(y);
-                yhi = yhi.max(y);
-            }
-        }
-    }
-    let xa = if xlo <= xhi {
-        Axis::new(xlo, xhi, log_x)
-    } else {
-        Axis::new(1.0, 10.0, log_x)
-    };
-    let ya = if y_range.0.is_finite() && y_range.1.is_finite() && y_range.0 < y_range.1 {
-        Axis::new(y_range.0, y_range.1, false)
-    } else if ylo <= yhi {
-        let pad = 0.05 * (yhi - ylo);
-        Axis::new(ylo - pad, yhi + pad, false)
-    } else {
-        Axis::new(0.0, 1.0, false)
-    };
-
-    // Legend panel geometry.
-    let n = series.len();
-    let top = 62;
-    let bottom = H - 80;
-    let avail = bottom - top - 40;
-    let row_h = if n == 0 {
-        24
-    } else {
-        (avail / n as i32).clamp(10, 24)
-    };
-    let leg_tf = Tf::new((f64::from(row_h) * 0.64).clamp(9.0, 15.0), TEXT);
-    let sample_w = 34;
-    let mut lw = 0;
-    for (name, _) in series {
-        lw = lw.max(width(&root, name, &leg_tf)?);
-    }
-    let panel_w = (sample_w + 10 + lw + 24).clamp(160, 420);
-    let label_max = panel_w - sample_w - 10 - 24;
-    let left = left_margin(&root, &ya)?;
-    let frame = Frame {
-        x0: left,
-        y0: top,
-        x1: W - panel_w - 36,
-        y1: bottom,
-        xa,
-        ya,
-    };
-    title_text(&root, title, W)?;
-    draw_axes(&root, &frame, x_label, y_label)?;
-
-    let with_markers = n > 10;
-    let dashed = |i: usize| (i / PALETTE.len()) % 2 == 1;
-    for (i, (_, pts)) in series.iter().enumerate() {
-        let c = palette(i);
-        let st = style(c, 2, false);
-        polyline(
-            &root,
-            &frame,
-            pts,
-            st,
-            if dashed(i) { Some((9, 5)) } else { None },
-        )?;
-        let valid: Vec<(f64, f64)> = pts
-            .iter()
-            .copied()
-            .filter(|&(x, y)| xa.accepts(x) && ya.accepts(y))
-            .collect();
-        if with_markers || valid.len() == 1 {
-            let every = (valid.len() / 8).max(1);
-            let offset = (i * every).checked_div(n).unwrap_or(0);
-            for (j, &(x, y)) in valid.iter().enumerate() {
-                if !(j + offset).is_multiple_of(every) && valid.len() > 1 {
-                    continue;
-                }
-                let p = (frame.px(x), frame.py(y));
-                if frame.contains(p) {
-                    marker(&root, i, round_pt(p), 4, c)?;
+        let (mut xlo, mut xhi) = (f64::INFINITY, f64::NEG_INFINITY);
+        let (mut ylo, mut yhi) = (f64::INFINITY, f64::NEG_INFINITY);
+        for (_, pts) in series {
+            for &(x, y) in pts {
+                if x.is_finite() && (!log_x || x > 0.0) && y.is_finite() {
+                    xlo = xlo.min(x);
+                    xhi = xhi.max(x);
+                    ylo = ylo.min(y);
+                    yhi = yhi.max(y);
                 }
             }
         }
-    }
-
-    // Legend.
-    let lx0 = frame.x1 + 20;
-    let ly0 = frame.y0;
-    // Entries that fit the panel; the rest are summed up in a last line.
-    let fit = ((bottom - ly0 - 12) / row_h).max(1) as usize;
-    let listed = if n > fit { fit - 1 } else { n };
-    let rows_drawn = if n > fit { fit } else { n };
-    if n > 0 {
-        let box_h = row_h * rows_drawn as i32 + 12;
-        root.draw(&Rectangle::new(
-            [(lx0, ly0), (lx0 + panel_w, ly0 + box_h)],
-            style(GRID_MAJOR, 1, false),
-        ))?;
-    }
-    if listed < n {
-        let y = ly0 + 6 + listed as i32 * row_h + row_h / 2;
-        let more = format!("… and {} more", n - listed);
-        put(&root, &more, (lx0 + 8, y), &leg_tf, Ha::Left, Va::Center)?;
-    }
-    for (i, (name, _)) in series.iter().enumerate().take(listed) {
-        let y = ly0 + 6 + i as i32 * row_h + row_h / 2;
-        let c = palette(i);
-        let (sx0, sx1) = (lx0 + 8, lx0 + 8 + sample_w);
-        if dashed(i) {
-            root.draw(&DashedPathElement::new(
-                vec![(sx0, y), (sx1, y)],
-                9,
-                5,
-                style(c, 2, false),
-            ))?;
+        let xa = if xlo <= xhi {
+            Axis::new(xlo, xhi, log_x)
         } else {
-            root.draw(&PathElement::new(
-                vec![(sx0, y), (sx1, y)],
-                style(c, 2, false),
+            Axis::new(1.0, 10.0, log_x)
+        };
+        let ya = if y_range.0.is_finite() && y_range.1.is_finite() && y_range.0 < y_range.1 {
+            Axis::new(y_range.0, y_range.1, false)
+        } else if ylo <= yhi {
+            let pad = 0.05 * (yhi - ylo);
+            Axis::new(ylo - pad, yhi + pad, false)
+        } else {
+            Axis::new(0.0, 1.0, false)
+        };
+
+        // Legend panel geometry.
+        let n = series.len();
+        let top = 62;
+        let bottom = H - 80;
+        let avail = bottom - top - 40;
+        let row_h = if n == 0 {
+            24
+        } else {
+            (avail / n as i32).clamp(10, 24)
+        };
+        let leg_tf = Tf::new((f64::from(row_h) * 0.64).clamp(9.0, 15.0), TEXT);
+        let sample_w = 34;
+        let mut lw = 0;
+        for (name, _) in series {
+            lw = lw.max(width(&root, name, &leg_tf)?);
+        }
+        let panel_w = (sample_w + 10 + lw + 24).clamp(160, 420);
+        let label_max = panel_w - sample_w - 10 - 24;
+        let left = left_margin(&root, &ya)?;
+        let frame = Frame {
+            x0: left,
+            y0: top,
+            x1: W - panel_w - 36,
+            y1: bottom,
+            xa,
+            ya,
+        };
+        title_text(&root, title, W)?;
+        draw_axes(&root, &frame, x_label, y_label)?;
+
+        let with_markers = n > 10;
+        let dashed = |i: usize| (i / PALETTE.len()) % 2 == 1;
+        for (i, (_, pts)) in series.iter().enumerate() {
+            let c = palette(i);
+            let st = style(c, 2, false);
+            polyline(
+                &root,
+                &frame,
+                pts,
+                st,
+                if dashed(i) { Some((9, 5)) } else { None },
+            )?;
+            let valid: Vec<(f64, f64)> = pts
+                .iter()
+                .copied()
+                .filter(|&(x, y)| xa.accepts(x) && ya.accepts(y))
+                .collect();
+            if with_markers || valid.len() == 1 {
+                let every = (valid.len() / 8).max(1);
+                let offset = (i * every).checked_div(n).unwrap_or(0);
+                for (j, &(x, y)) in valid.iter().enumerate() {
+                    if !(j + offset).is_multiple_of(every) && valid.len() > 1 {
+                        continue;
+                    }
+                    let p = (frame.px(x), frame.py(y));
+                    if frame.contains(p) {
+                        marker(&root, i, round_pt(p), 4, c)?;
+                    }
+                }
+            }
+        }
+
+        // Legend.
+        let lx0 = frame.x1 + 20;
+        let ly0 = frame.y0;
+        // Entries that fit the panel; the rest are summed up in a last line.
+        let fit = ((bottom - ly0 - 12) / row_h).max(1) as usize;
+        let listed = if n > fit { fit - 1 } else { n };
+        let rows_drawn = if n > fit { fit } else { n };
+        if n > 0 {
+            let box_h = row_h * rows_drawn as i32 + 12;
+            root.draw(&Rectangle::new(
+                [(lx0, ly0), (lx0 + panel_w, ly0 + box_h)],
+                style(GRID_MAJOR, 1, false),
             ))?;
         }
-        if with_markers {
-            marker(&root, i, ((sx0 + sx1) / 2, y), 4, c)?;
+        if listed < n {
+            let y = ly0 + 6 + listed as i32 * row_h + row_h / 2;
+            let more = format!("… and {} more", n - listed);
+            put(&root, &more, (lx0 + 8, y), &leg_tf, Ha::Left, Va::Center)?;
         }
-        let label = ellipsize(&root, name, &leg_tf, label_max)?;
-        put(&root, &label, (sx1 + 10, y), &leg_tf, Ha::Left, Va::Center)?;
-    }
-    if n == 0 {
-        put(
-            &root,
-            "no data",
-            (lx0, ly0 + 10),
-            &Tf::new(13.0, NOTE),
-            Ha::Left,
-            Va::Top,
-        )?;
-    }
-    root.present()?;
-    Ok(())
+        for (i, (name, _)) in series.iter().enumerate().take(listed) {
+            let y = ly0 + 6 + i as i32 * row_h + row_h / 2;
+            let c = palette(i);
+            let (sx0, sx1) = (lx0 + 8, lx0 + 8 + sample_w);
+            if dashed(i) {
+                root.draw(&DashedPathElement::new(
+                    vec![(sx0, y), (sx1, y)],
+                    9,
+                    5,
+                    style(c, 2, false),
+                ))?;
+            } else {
+                root.draw(&PathElement::new(
+                    vec![(sx0, y), (sx1, y)],
+                    style(c, 2, false),
+                ))?;
+            }
+            if with_markers {
+                marker(&root, i, ((sx0 + sx1) / 2, y), 4, c)?;
+            }
+            let label = ellipsize(&root, name, &leg_tf, label_max)?;
+            put(&root, &label, (sx1 + 10, y), &leg_tf, Ha::Left, Va::Center)?;
+        }
+        if n == 0 {
+            put(
+                &root,
+                "no data",
+                (lx0, ly0 + 10),
+                &Tf::new(13.0, NOTE),
+                Ha::Left,
+                Va::Top,
+            )?;
+        }
+        Ok(())
+    })
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -1821,32 +1840,32 @@ pub fn labelled_grid(
     let iy0 = title_h + col_band;
     let ch = iy0 + hi + margin;
 
-    let root = BitMapBackend::new(path, (cw as u32, ch as u32)).into_drawing_area();
-    root.fill(&WHITE)?;
-    if !title.is_empty() {
-        title_text(&root, title, cw)?;
-    }
-    let img = BitMapElement::<(i32, i32)>::with_ref((ix0, iy0), (w as u32, h as u32), rgb)
-        .ok_or("labelled_grid: image buffer too small")?;
-    root.draw(&img)?;
+    save(path, (cw as u32, ch as u32), |root| {
+        root.fill(&WHITE)?;
+        if !title.is_empty() {
+            title_text(&root, title, cw)?;
+        }
+        let img = BitMapElement::<(i32, i32)>::with_ref((ix0, iy0), (w as u32, h as u32), rgb)
+            .ok_or("labelled_grid: image buffer too small")?;
+        root.draw(&img)?;
 
-    for (c, lines) in col_lines.iter().enumerate() {
-        let x = ix0 + (cell_w * (c as f64 + 0.5)).round() as i32;
-        let n = lines.len() as i32;
-        for (j, l) in lines.iter().enumerate() {
-            // Bottom-aligned: the last line sits just above the image.
-            let y = iy0 - 8 - (n - 1 - j as i32) * lab_tf.line();
-            put(&root, l, (x, y), &lab_tf, Ha::Center, Va::Baseline)?;
+        for (c, lines) in col_lines.iter().enumerate() {
+            let x = ix0 + (cell_w * (c as f64 + 0.5)).round() as i32;
+            let n = lines.len() as i32;
+            for (j, l) in lines.iter().enumerate() {
+                // Bottom-aligned: the last line sits just above the image.
+                let y = iy0 - 8 - (n - 1 - j as i32) * lab_tf.line();
+                put(&root, l, (x, y), &lab_tf, Ha::Center, Va::Baseline)?;
+            }
         }
-    }
-    for (r, lines) in row_lines.iter().enumerate() {
-        let yc = iy0 + (cell_h * (r as f64 + 0.5)).round() as i32;
-        let n = lines.len() as i32;
-        for (j, l) in lines.iter().enumerate() {
-            let y = yc + ((2 * j as i32 - (n - 1)) * lab_tf.line()) / 2;
-            put(&root, l, (ix0 - 12, y), &lab_tf, Ha::Right, Va::Center)?;
+        for (r, lines) in row_lines.iter().enumerate() {
+            let yc = iy0 + (cell_h * (r as f64 + 0.5)).round() as i32;
+            let n = lines.len() as i32;
+            for (j, l) in lines.iter().enumerate() {
+                let y = yc + ((2 * j as i32 - (n - 1)) * lab_tf.line()) / 2;
+                put(&root, l, (ix0 - 12, y), &lab_tf, Ha::Right, Va::Center)?;
+            }
         }
-    }
-    root.present()?;
-    Ok(())
+        Ok(())
+    })
 }
