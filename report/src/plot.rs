@@ -1039,10 +1039,10 @@ pub fn pareto(
         let note_tf = Tf::new(13.0, NOTE);
         let mut panel_w = 250;
         for f in &families {
-            panel_w = panel_w.max(width(&root, f, &leg_tf)? + 50);
+            panel_w = panel_w.max(width(root, f, &leg_tf)? + 50);
         }
         let panel_w = panel_w.min(380);
-        let left = left_margin(&root, &ya)?;
+        let left = left_margin(root, &ya)?;
         let frame = Frame {
             x0: left,
             y0: 62,
@@ -1052,8 +1052,8 @@ pub fn pareto(
             ya,
         };
 
-        title_text(&root, title, W)?;
-        draw_axes(&root, &frame, x_label, y_label)?;
+        title_text(root, title, W)?;
+        draw_axes(root, &frame, x_label, y_label)?;
 
         let marker_r = 6;
         let pix: Vec<(f64, f64)> = shown
@@ -1064,9 +1064,9 @@ pub fn pareto(
         // Floor line for exact (y <= 0) points.
         if n_floor > 0 {
             let y = frame.py(floor).round() as i32;
-            area_dashed_hline(&root, &frame, y)?;
+            area_dashed_hline(root, &frame, y)?;
             put(
-                &root,
+                root,
                 &format!("y ≤ 0 drawn at {}", fmt_sig(floor, 2)),
                 (frame.x1 - 6, y - 4),
                 &Tf::new(12.0, NOTE),
@@ -1098,14 +1098,14 @@ pub fn pareto(
                     filled: false,
                     stroke_width: 2,
                 };
-                polyline(&root, &frame, &front, st, Some((7, 5)))?;
+                polyline(root, &frame, &front, st, Some((7, 5)))?;
             }
         }
 
         // Markers.
         for (p, &(x, y)) in shown.iter().zip(&pix) {
             let fi = fam_index(&p.family);
-            marker(&root, fi, round_pt((x, y)), marker_r, palette(fi))?;
+            marker(root, fi, round_pt((x, y)), marker_r, palette(fi))?;
         }
 
         // Labels, most crowded points first.
@@ -1142,7 +1142,7 @@ pub fn pareto(
             if label.is_empty() {
                 continue;
             }
-            let w = f64::from(width(&root, label, &lab_tf)?) + 4.0;
+            let w = f64::from(width(root, label, &lab_tf)?) + 4.0;
             let h = f64::from(lab_tf.height()) + 2.0;
             let (px, py) = pix[i];
             let mut best: Option<(f64, Bx, f64)> = None;
@@ -1213,7 +1213,7 @@ pub fn pareto(
                 },
             ))?;
             put(
-                &root,
+                root,
                 &shown[i].form,
                 round_pt((bx.l + 2.0, bx.t + 2.0)),
                 &Tf { color: c, ..lab_tf },
@@ -1255,7 +1255,7 @@ pub fn pareto(
         let mut note_lines = Vec::new();
         for (note, indented) in &notes {
             let x = if *indented { px0 + 28 } else { px0 };
-            note_lines.push((x, wrap(&root, note, &note_tf, panel_w - (x - px0) - 8)?));
+            note_lines.push((x, wrap(root, note, &note_tf, panel_w - (x - px0) - 8)?));
         }
         let notes_h: i32 = note_lines
             .iter()
@@ -1264,7 +1264,7 @@ pub fn pareto(
 
         let mut y = frame.y0 + 6;
         put(
-            &root,
+            root,
             "Families",
             (px0, y),
             &Tf::new(16.0, TEXT).bold(),
@@ -1284,14 +1284,14 @@ pub fn pareto(
         let fam_tf = Tf::new((f64::from(row_h) * 0.64).clamp(10.0, 15.0), TEXT);
         let leg_r = (row_h / 3).clamp(4, marker_r);
         for (fi, f) in families.iter().enumerate().take(listed) {
-            marker(&root, fi, (px0 + 10, y), leg_r, palette(fi))?;
-            let name = ellipsize(&root, f, &fam_tf, panel_w - 36)?;
-            put(&root, &name, (px0 + 26, y), &fam_tf, Ha::Left, Va::Center)?;
+            marker(root, fi, (px0 + 10, y), leg_r, palette(fi))?;
+            let name = ellipsize(root, f, &fam_tf, panel_w - 36)?;
+            put(root, &name, (px0 + 26, y), &fam_tf, Ha::Left, Va::Center)?;
             y += row_h;
         }
         if listed < families.len() {
             let more = format!("… and {} more", families.len() - listed);
-            put(&root, &more, (px0 + 26, y), &fam_tf, Ha::Left, Va::Center)?;
+            put(root, &more, (px0 + 26, y), &fam_tf, Ha::Left, Va::Center)?;
             y += row_h;
         }
         y += 8;
@@ -1311,7 +1311,7 @@ pub fn pareto(
             }
             for (j, l) in lines.iter().enumerate() {
                 let yy = y + j as i32 * note_tf.line();
-                put(&root, l, (*x, yy), &note_tf, Ha::Left, Va::Center)?;
+                put(root, l, (*x, yy), &note_tf, Ha::Left, Va::Center)?;
             }
             y += lines.len() as i32 * note_tf.line() + 6;
         }
@@ -1438,7 +1438,7 @@ pub fn heatmap(
 
     save(path, (w as u32, h as u32), |root| {
         root.fill(&WHITE)?;
-        title_text(&root, title, w)?;
+        title_text(root, title, w)?;
         let (gx0, gy0) = (left, top);
         let (gx1, gy1) = (gx0 + gw, gy0 + gh);
 
@@ -1450,13 +1450,13 @@ pub fn heatmap(
             let mut ww = 0;
             for v in values.iter().flatten() {
                 let s = fmt_sig(*v, 3);
-                let sw = width(&root, &s, &Tf::new(vsize, TEXT))?;
+                let sw = width(root, &s, &Tf::new(vsize, TEXT))?;
                 if sw > ww {
                     ww = sw;
                     widest = s;
                 }
             }
-            while vsize > 8.0 && width(&root, &widest, &Tf::new(vsize, TEXT))? > cw - 6 {
+            while vsize > 8.0 && width(root, &widest, &Tf::new(vsize, TEXT))? > cw - 6 {
                 vsize -= 1.0;
             }
         }
@@ -1476,9 +1476,9 @@ pub fn heatmap(
                 if show_values {
                     let s = fmt_sig(v, 3);
                     let tf = Tf::new(vsize, contrast(c));
-                    if width(&root, &s, &tf)? <= cw - 4 && tf.height() <= ch - 2 {
+                    if width(root, &s, &tf)? <= cw - 4 && tf.height() <= ch - 2 {
                         put(
-                            &root,
+                            root,
                             &s,
                             (x0 + cw / 2, y1 - ch / 2),
                             &tf,
@@ -1503,7 +1503,7 @@ pub fn heatmap(
                 style(TEXT, 1, false),
             ))?;
             if ix % kx == 0 {
-                put(&root, l, (x, gy1 + 11), &tick_tf, Ha::Center, Va::Top)?;
+                put(root, l, (x, gy1 + 11), &tick_tf, Ha::Center, Va::Top)?;
             }
         }
         let ky = ((tick_tf.height() + 4) as f64 / f64::from(ch))
@@ -1516,20 +1516,20 @@ pub fn heatmap(
                 style(TEXT, 1, false),
             ))?;
             if iy % ky == 0 {
-                put(&root, l, (gx0 - 10, y), &tick_tf, Ha::Right, Va::Center)?;
+                put(root, l, (gx0 - 10, y), &tick_tf, Ha::Right, Va::Center)?;
             }
         }
         put(
-            &root,
+            root,
             x_label,
             ((gx0 + gx1) / 2, gy1 + 11 + tick_tf.height() + 16),
             &label_tf,
             Ha::Center,
             Va::Top,
         )?;
-        let ylab = ellipsize(&root, y_label, &label_tf, gh.max(200))?;
+        let ylab = ellipsize(root, y_label, &label_tf, gh.max(200))?;
         put_vertical(
-            &root,
+            root,
             &ylab,
             (gx0 - 10 - ytw - 14 - label_tf.height() / 2, (gy0 + gy1) / 2),
             &label_tf,
@@ -1555,11 +1555,11 @@ pub fn heatmap(
                 vec![(bx1, y), (bx1 + 5, y)],
                 style(TEXT, 1, false),
             ))?;
-            put(&root, l, (bx1 + 10, y), &tick_tf, Ha::Left, Va::Center)?;
+            put(root, l, (bx1 + 10, y), &tick_tf, Ha::Left, Va::Center)?;
         }
-        let cbl = ellipsize(&root, colorbar_label, &label_tf, gh.max(200))?;
+        let cbl = ellipsize(root, colorbar_label, &label_tf, gh.max(200))?;
         put_vertical(
-            &root,
+            root,
             &cbl,
             (bx1 + 10 + btw + 14 + label_tf.height() / 2, (gy0 + gy1) / 2),
             &label_tf,
@@ -1573,8 +1573,8 @@ pub fn heatmap(
         }
         let mut y = gy1 + 14;
         for n in notes {
-            for l in wrap(&root, n, &note_tf, w - bx0 - 10)? {
-                put(&root, &l, (bx0, y), &note_tf, Ha::Left, Va::Top)?;
+            for l in wrap(root, n, &note_tf, w - bx0 - 10)? {
+                put(root, &l, (bx0, y), &note_tf, Ha::Left, Va::Top)?;
                 y += note_tf.line();
             }
         }
@@ -1652,11 +1652,11 @@ pub fn curves(
         let sample_w = 34;
         let mut lw = 0;
         for (name, _) in series {
-            lw = lw.max(width(&root, name, &leg_tf)?);
+            lw = lw.max(width(root, name, &leg_tf)?);
         }
         let panel_w = (sample_w + 10 + lw + 24).clamp(160, 420);
         let label_max = panel_w - sample_w - 10 - 24;
-        let left = left_margin(&root, &ya)?;
+        let left = left_margin(root, &ya)?;
         let frame = Frame {
             x0: left,
             y0: top,
@@ -1665,8 +1665,8 @@ pub fn curves(
             xa,
             ya,
         };
-        title_text(&root, title, W)?;
-        draw_axes(&root, &frame, x_label, y_label)?;
+        title_text(root, title, W)?;
+        draw_axes(root, &frame, x_label, y_label)?;
 
         let with_markers = n > 10;
         let dashed = |i: usize| (i / PALETTE.len()) % 2 == 1;
@@ -1674,7 +1674,7 @@ pub fn curves(
             let c = palette(i);
             let st = style(c, 2, false);
             polyline(
-                &root,
+                root,
                 &frame,
                 pts,
                 st,
@@ -1694,7 +1694,7 @@ pub fn curves(
                     }
                     let p = (frame.px(x), frame.py(y));
                     if frame.contains(p) {
-                        marker(&root, i, round_pt(p), 4, c)?;
+                        marker(root, i, round_pt(p), 4, c)?;
                     }
                 }
             }
@@ -1717,7 +1717,7 @@ pub fn curves(
         if listed < n {
             let y = ly0 + 6 + listed as i32 * row_h + row_h / 2;
             let more = format!("… and {} more", n - listed);
-            put(&root, &more, (lx0 + 8, y), &leg_tf, Ha::Left, Va::Center)?;
+            put(root, &more, (lx0 + 8, y), &leg_tf, Ha::Left, Va::Center)?;
         }
         for (i, (name, _)) in series.iter().enumerate().take(listed) {
             let y = ly0 + 6 + i as i32 * row_h + row_h / 2;
@@ -1737,14 +1737,14 @@ pub fn curves(
                 ))?;
             }
             if with_markers {
-                marker(&root, i, ((sx0 + sx1) / 2, y), 4, c)?;
+                marker(root, i, ((sx0 + sx1) / 2, y), 4, c)?;
             }
-            let label = ellipsize(&root, name, &leg_tf, label_max)?;
-            put(&root, &label, (sx1 + 10, y), &leg_tf, Ha::Left, Va::Center)?;
+            let label = ellipsize(root, name, &leg_tf, label_max)?;
+            put(root, &label, (sx1 + 10, y), &leg_tf, Ha::Left, Va::Center)?;
         }
         if n == 0 {
             put(
-                &root,
+                root,
                 "no data",
                 (lx0, ly0 + 10),
                 &Tf::new(13.0, NOTE),
@@ -1843,7 +1843,7 @@ pub fn labelled_grid(
     save(path, (cw as u32, ch as u32), |root| {
         root.fill(&WHITE)?;
         if !title.is_empty() {
-            title_text(&root, title, cw)?;
+            title_text(root, title, cw)?;
         }
         let img = BitMapElement::<(i32, i32)>::with_ref((ix0, iy0), (w as u32, h as u32), rgb)
             .ok_or("labelled_grid: image buffer too small")?;
@@ -1855,7 +1855,7 @@ pub fn labelled_grid(
             for (j, l) in lines.iter().enumerate() {
                 // Bottom-aligned: the last line sits just above the image.
                 let y = iy0 - 8 - (n - 1 - j as i32) * lab_tf.line();
-                put(&root, l, (x, y), &lab_tf, Ha::Center, Va::Baseline)?;
+                put(root, l, (x, y), &lab_tf, Ha::Center, Va::Baseline)?;
             }
         }
         for (r, lines) in row_lines.iter().enumerate() {
@@ -1863,7 +1863,7 @@ pub fn labelled_grid(
             let n = lines.len() as i32;
             for (j, l) in lines.iter().enumerate() {
                 let y = yc + ((2 * j as i32 - (n - 1)) * lab_tf.line()) / 2;
-                put(&root, l, (ix0 - 12, y), &lab_tf, Ha::Right, Va::Center)?;
+                put(root, l, (ix0 - 12, y), &lab_tf, Ha::Right, Va::Center)?;
             }
         }
         Ok(())
