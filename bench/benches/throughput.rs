@@ -466,7 +466,8 @@ fn timing_mode(path: &str) -> Result<(), String> {
                 let _ = batch::run_f32(a, [o], move |[vx, vy, vz, lx, ly, lz]| {
                     let (v, l) = (V3::new(vx, vy, vz), V3::new(lx, ly, lz));
                     let s = v + l;
-                    let h = s * s.length().recip();
+                    // `Real::recip`, not `wide`'s inherent `recip` (a 12-bit estimate on AVX).
+                    let h = s * Real::recip(s.length());
                     let vh = v.dot(h);
                     let f = fresnel::conductor(vh, eta, k);
                     [cook_torrance::ggx(

@@ -52,6 +52,8 @@ import time
 
 import numpy as np
 
+import reference as ref
+
 ALPHA = 0.3
 ETA, K = 0.2, 3.0
 KERNELS = ["ggx_d", "beckmann_d", "rough_conductor"]
@@ -153,6 +155,65 @@ def mitsuba_kernels(soa, variant, threads):
     return kernels, versions
 
 
+def measure_accuracy(soa, mi_values, brdf_values, n_check, seed):
+    """{(side, row): (max ULP, median ULP, max relative error, worst element)} of each side's
+    f32 results against its float64 reference over every element; then mpmath checks the
+    float64 references on n_check random elements and each row's ten worst, and prints the
+    largest disagreement (in f32 ULP; it must be far below the errors reported)."""
+    vx, vy, vz, lx, ly, lz = (a.astype(np.float64) for a in soa)
+    v, l = (vx, vy, vz), (lx, ly, lz)
+    a = np.float32(ALPHA).astype(np.float64)
+    eta, k = float(np.float32(ETA)), float(np.float32(K))
+    refs64 = {
+        "ggx_d": (lambda: ref.ggx_d_vec_f64(vx, vy, vz, a),
+                  lambda: ref.ggx_d_cos_f64(vz, a)),
+        "beckmann_d": (lambda: ref.beckmann_d_vec_f64(vx, vy, vz, a),
+                       lambda: ref.beckmann_d_cos_f64(vz, a)),
+        "rough_conductor": (lambda: ref.rough_conductor_mitsuba_f64(v, l, a, eta, k),
+                            lambda: ref.rough_conductor_brdf_f64(v, l, a, eta, k)),
+    }
+    refs_mp = {
+        "ggx_d": (lambda i: ref.ggx_d_vec_mp(vx[i], vy[i], vz[i], a),
+                  lambda i: ref.ggx_d_cos_mp(vz[i], a)),
+        "beckmann_d": (lambda i: ref.beckmann_d_vec_mp(vx[i], vy[i], vz[i], a),
+                       lambda i: ref.beckmann_d_cos_mp(vz[i], a)),
+        "rough_conductor": (
+            lambda i: ref.rough_conductor_mitsuba_mp([t[i] for t in v], [t[i] for t in l],
+                                                     a, eta, k),
+            lambda i: ref.rough_conductor_brdf_mp([t[i] for t in v], [t[i] for t in l],
+                                                  a, eta, k)),
+    }
+    out, worst_of = {}, {}
+    for name in KERNELS:
+        r_mi, r_brdf = refs64[name][0](), refs64[name][1]()
+        rows = [("mitsuba", name, np.asarray(mi_values[name], np.float32), r_mi, 0)]
+        for row in (name, name + "_fast") + (("ggx_d_plain",) if name == "ggx_d" else ()):
+            if row in brdf_values:
+                rows.append(("brdf", row, brdf_values[row], r_brdf, 1))
+        for side, row, x, r, which in rows:
+            ulp, rel, sub = ref.errors(x, r)
+            abs_sub = float(np.abs(x[sub].astype(np.float64) - r[sub]).max()) if sub.any() else 0.0
+            ulp, rel = np.where(sub, 0.0, ulp), np.where(sub, 0.0, rel)
+            order = np.argsort(ulp)[::-1]
+            out[(side, row)] = (float(ulp.max()), float(np.median(ulp[~sub])), float(rel.max()),
+                                int(order[0]), int(sub.sum()), abs_sub)
+            worst_of.setdefault((name, which), set()).update(int(i) for i in order[:10])
+    rng = np.random.default_rng(seed + 1)
+    sample = set(int(i) for i in rng.choice(len(vz), size=min(n_check, len(vz)), replace=False))
+    for name in KERNELS:
+        for which, side in ((0, "Mitsuba's"), (1, "brdf's")):
+            r64 = refs64[name][which]()
+            idx = sorted(sample | worst_of.get((name, which), set()))
+            dev = 0.0
+            for i in idx:
+                rm = refs_mp[name][which](i)
+                if rm != 0:
+                    dev = max(dev, float(abs(r64[i] - rm)) / float(ref.ulp_f32(float(rm))))
+            print(f"# reference check: float64 against mpmath, {side} {name}: "
+                  f"max {dev:.2g} f32 ULP over {len(idx)} elements")
+    return out
+
+
 def time_mitsuba(kernel):
     import drjit as dr
 
@@ -173,6 +234,8 @@ def main():
     p.add_argument("--brdf-exe", help="a built throughput bench binary (skips the build)")
     p.add_argument("--target-dir", default="target/native", help="CARGO_TARGET_DIR of the build")
     p.add_argument("--no-pin", action="store_true", help="do not pin to core 0")
+    p.add_argument("--check", type=int, default=1000,
+                   help="elements on which mpmath checks the float64 reference")
     args = p.parse_args()
     pin_to_one_core(args)
     repo = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
@@ -188,15 +251,19 @@ def main():
         # Warm: Mitsuba compiles and caches each kernel; brdf writes its values once.
         mi_values = {name: np.asarray(time_mitsuba(k)[1]) for name, k in kernels.items()}
         run_brdf(exe, raw, 1, out_dir=tmp)
-        for name in KERNELS + list(FAST):
-            if not os.path.exists(os.path.join(tmp, f"{name}.f32")):
-                continue
-            ours = np.fromfile(os.path.join(tmp, f"{name}.f32"), dtype="<f4")
-            theirs = mi_values[FAST.get(name, name)].astype(np.float64)
+        brdf_values = {}
+        for name in KERNELS + list(FAST) + ["ggx_d_plain"]:
+            path = os.path.join(tmp, f"{name}.f32")
+            if os.path.exists(path):
+                brdf_values[name] = np.fromfile(path, dtype="<f4")
+        for name, ours in brdf_values.items():
+            theirs = mi_values[FAST.get(name, "ggx_d" if name == "ggx_d_plain" else name)]
+            theirs = theirs.astype(np.float64)
             ok = theirs > 0
             ratio = ours[ok] / theirs[ok]
             print(f"# values {name}: brdf / Mitsuba median {np.median(ratio):.6f}, "
                   f"range [{ratio.min():.4g}, {ratio.max():.4g}] over {ok.sum()} elements")
+        accuracy = measure_accuracy(soa, mi_values, brdf_values, args.check, args.seed)
 
         mi_ms = {name: [] for name in KERNELS}
         brdf_ms = {name: [] for name in KERNELS + list(FAST) + ["ggx_d_plain", "copy"]}
@@ -213,19 +280,33 @@ def main():
     print(f"\n| kernel ({args.n:.0e} elements) | Mitsuba 3 | brdf f32x8 | brdf / Mitsuba "
           f"| brdf / copy |")
     print("|---|---|---|---|---|")
+
+    def cell(ms, acc):
+        return f"{ms:.2f} ms at {acc[0]:.3g} ULP (median {acc[1]:.2g})"
+
     for name in KERNELS:
         m, b = statistics.median(mi_ms[name]), med[name]
-        print(f"| {LABELS[name]} | {m:.2f} ms | {b:.2f} ms | {b / m:.2f} | {b / copy:.2f} |")
-        fast = name + "_fast"
-        if med.get(fast) is not None:
-            b = med[fast]
-            print(f"| {LABELS[fast]} | {m:.2f} ms | {b:.2f} ms | {b / m:.2f} | {b / copy:.2f} |")
-    if "ggx_d_plain" in med:
-        b = med["ggx_d_plain"]
-        m = statistics.median(mi_ms["ggx_d"])
-        print(f"| GGX D in working precision (bench-local yardstick, not a brdf kernel) "
-              f"| {m:.2f} ms | {b:.2f} ms | {b / m:.2f} | {b / copy:.2f} |")
+        mi_acc = accuracy[("mitsuba", name)]
+        rows = [(LABELS[name], name)]
+        if med.get(name + "_fast") is not None:
+            rows.append((LABELS[name + "_fast"], name + "_fast"))
+        if name == "ggx_d" and "ggx_d_plain" in med:
+            rows.append(("GGX D in working precision (bench-local yardstick, not a brdf kernel)",
+                         "ggx_d_plain"))
+        for label, row in rows:
+            b = med[row]
+            print(f"| {label} | {cell(m, mi_acc)} | {cell(b, accuracy[('brdf', row)])} "
+                  f"| {b / m:.2f} | {b / copy:.2f} |")
     print(f"| copy (floor) | | {copy:.2f} ms | | 1.00 |")
+    print("\nULP: each result against the function it computes, evaluated exactly on the same "
+          "f32 inputs (bench/mitsuba/reference.py): max and median over all "
+          f"{args.n} elements whose exact value is 0 or a normal f32; max relative error; "
+          "elements whose exact value is subnormal (below 1.2e-38), and the largest absolute "
+          "error there:")
+    for (side, name), (mx, md, rel, worst, n_sub, abs_sub) in accuracy.items():
+        print(f"#   {side:7s} {name:22s} max {mx:10.4g} ULP  median {md:8.3g}  "
+              f"max rel {rel:.3g}  (worst element {worst}); subnormal: {n_sub}, "
+              f"max abs error {abs_sub:.3g}")
     print("\n# every round (ms):")
     for name in KERNELS:
         print(f"#   mitsuba {name}: {' '.join(f'{x:.2f}' for x in mi_ms[name])}")
