@@ -15,7 +15,6 @@
 //!
 //! `cargo run --release --example furnace`
 use brdf::Cosines;
-use brdf::glam::DVec3;
 use brdf::integrate::{Estimate, directional_albedo};
 use brdf::material::MetallicRoughness;
 use brdf::microfacet::Alpha;
@@ -65,10 +64,6 @@ fn at(deg: f64) -> V3<f64> {
     V3::new(t.sin(), 0.0, t.cos())
 }
 
-fn v3(w: DVec3) -> V3<f64> {
-    V3::new(w.x, w.y, w.z)
-}
-
 /// Prints one comparison and says whether it passed.
 fn compare(label: &str, mc: &Mean, reference: Estimate) -> bool {
     let (mean, se) = (mc.mean(), mc.std_error());
@@ -116,9 +111,7 @@ fn main() -> ExitCode {
                     0.0
                 });
             }
-            let reference = directional_albedo(DVec3::new(wo.x, wo.y, wo.z), |o, i| {
-                ggx_f1(alpha, v3(o), v3(i))
-            });
+            let reference = directional_albedo(wo, |o, i| ggx_f1(alpha, o, i));
             let label = format!("GGX F=1 alpha {alpha:<4} theta_o {deg:>2}");
             all_ok &= compare(&label, &mc, reference);
             if alpha == 1.0 && deg == 0.0 {
@@ -154,10 +147,9 @@ fn main() -> ExitCode {
                     acc.add(x);
                 }
             }
-            let wo_d = DVec3::new(wo.x, wo.y, wo.z);
             for (c, channel) in ["R", "G", "B"].iter().enumerate() {
-                let reference = directional_albedo(wo_d, |o, i| {
-                    let f = mat.eval(v3(o), v3(i));
+                let reference = directional_albedo(wo, |o, i| {
+                    let f = mat.eval(o, i);
                     [f.x, f.y, f.z][c]
                 });
                 let label = format!("{name} theta_o {deg:>2} {channel}");

@@ -13,28 +13,35 @@
 //!
 //! | form | closure | directions |
 //! |---|---|---|
-//! | [`directional_albedo`], [`hemisphere`], ... | `f64` kernel | `glam::DVec3` |
-//! | [`directional_albedo_f32`], [`hemisphere_f32`], ... | `f32` kernel | `glam::Vec3` |
+//! | [`directional_albedo`], [`hemisphere`], ... | `f64` kernel | [`V3<f64>`](crate::V3) |
+//! | [`directional_albedo_f32`], [`hemisphere_f32`], ... | `f32` kernel | [`V3<f32>`](crate::V3) |
 //!
 //! The `_f32` form hands the kernel each direction rounded to `f32` and widens its result
 //! to `f64`; the integration itself (abscissae, weights, sums, error estimate) is the `f64`
 //! one, so an `f32` kernel's estimate differs from its `f64` twin's by the kernel's own
-//! rounding only (`tests/integrate/generic.rs`). A kernel written on [`V3`](crate::V3)
-//! converts each direction with `into()`:
+//! rounding only (`tests/integrate/generic.rs`). The directions are the crate's own
+//! [`V3`](crate::V3), so a kernel of this crate takes them as they come; a kernel written on
+//! glam's vectors converts each one with `into()` (`V3<f64>` into `DVec3`, `V3<f32>` into
+//! `Vec3`):
 //!
 //! ```
 //! use brdf::integrate::{directional_albedo, directional_albedo_f32};
-//! use brdf::glam::{DVec3, Vec3};
+//! use brdf::glam::DVec3;
 //! use brdf::{Real, V3};
 //!
 //! // A Lambertian lobe of albedo 0.5, written once over `V3<T>`.
 //! fn lambert<T: Real>(_wo: V3<T>, wi: V3<T>) -> T {
 //!     T::splat(0.5) * T::FRAC_1_PI * T::select(wi.z.simd_gt(T::ZERO), T::ONE, T::ZERO)
 //! }
-//! let a64 = directional_albedo(DVec3::Z, |wo, wi| lambert(wo.into(), wi.into()));
-//! let a32 = directional_albedo_f32(Vec3::Z, |wo, wi| lambert(wo.into(), wi.into()));
+//! let a64 = directional_albedo(V3::unit_z(), lambert);
+//! let a32 = directional_albedo_f32(V3::unit_z(), lambert);
 //! assert!((a64.value - 0.5).abs() < 1e-6);
 //! assert!((a32.value - 0.5).abs() < 1e-6);
+//!
+//! // The same lobe written on glam's DVec3.
+//! let glam_lambert = |_wo: DVec3, wi: DVec3| if wi.z > 0.0 { 0.5 / core::f64::consts::PI } else { 0.0 };
+//! let g = directional_albedo(V3::unit_z(), |wo, wi| glam_lambert(wo.into(), wi.into()));
+//! assert_eq!(g.value.to_bits(), a64.value.to_bits());
 //! ```
 //!
 //! # Method
@@ -89,7 +96,9 @@
 //! the budget is spent. What the integrand returns is summed as it is: a NaN from `f` makes
 //! the value NaN.
 
-use glam::{DVec3, Vec3};
+use glam::DVec3;
+
+use crate::V3;
 
 /// Most rectangles an integration keeps at once (its stack use is `CAPACITY` x 56 bytes).
 pub const CAPACITY: usize = 4096;
@@ -154,6 +163,16 @@ impl Config {
 /// True where every component of `w` is finite (false for NaN and +-inf).
 fn finite_dir(w: DVec3) -> bool {
     w.x.is_finite() && w.y.is_finite() && w.z.is_finite()
+}
+
+/// `w` widened to `f64` (exact).
+fn widen(w: V3<f32>) -> V3<f64> {
+    w.map(f64::from)
+}
+
+/// `w` rounded to `f32` (to nearest).
+fn narrow(w: DVec3) -> V3<f32> {
+    V3::new(w.x as f32, w.y as f32, w.z as f32)
 }
 
 /// Genz-Malik abscissae for two dimensions (fractions of the half-width).
@@ -341,7 +360,17 @@ impl Breaks {
 /// Bad input: a peak with a NaN or infinite component (among the first [`MAX_PEAKS`]) or an
 /// invalid `cfg` (a NaN or negative tolerance) gives [`Estimate::NAN`] without calling `f`.
 #[must_use]
-pub fn hemisphere(mut f: impl FnMut(DVec3) -> f64, peaks: &[DVec3], cfg: &Config) -> Estimate {
+pub fn hemisphere(mut f: impl FnMut(V3<f64>) -> f64, peaks: &[V3<f64>], cfg: &Config) -> Estimate {
+    let mut p = [DVec3::ZERO; MAX_PEAKS];
+    let n = peaks.len().min(MAX_PEAKS);
+    for (w, q) in p.iter_mut().zip(peaks) {
+        *w = DVec3::from(*q);
+    }
+    hemisphere_glam(|w| f(w.into()), &p[..n], cfg)
+}
+
+/// [`hemisphere`] on glam's vectors, which the integration's own arithmetic uses.
+fn hemisphere_glam(mut f: impl FnMut(DVec3) -> f64, peaks: &[DVec3], cfg: &Config) -> Estimate {
     use core::f64::consts::{FRAC_PI_2, PI, TAU};
     // Without these, a NaN tolerance stops refinement at once (every comparison is false) and
     // a NaN peak poisons the partition, both with a plausible finite estimate.
@@ -434,24 +463,28 @@ pub fn hemisphere(mut f: impl FnMut(DVec3) -> f64, peaks: &[DVec3], cfg: &Config
     }
 }
 
-/// [`hemisphere`] for an `f32` integrand over `glam::Vec3`: `f` sees each direction rounded
+/// [`hemisphere`] for an `f32` integrand over [`V3<f32>`]: `f` sees each direction rounded
 /// to `f32`, its result is widened to `f64`, and everything else is [`hemisphere`]'s.
 ///
 /// ```
 /// use brdf::integrate::{hemisphere_f32, Config};
-/// use brdf::glam::Vec3;
+/// use brdf::V3;
 /// // Integral of cos(theta) over the hemisphere: pi.
-/// let e = hemisphere_f32(|w: Vec3| w.z, &[], &Config::default());
+/// let e = hemisphere_f32(|w: V3<f32>| w.z, &[], &Config::default());
 /// assert!((e.value - core::f64::consts::PI).abs() < 1e-6);
 /// ```
 #[must_use]
-pub fn hemisphere_f32(mut f: impl FnMut(Vec3) -> f32, peaks: &[Vec3], cfg: &Config) -> Estimate {
-    let mut wide_peaks = [DVec3::ZERO; MAX_PEAKS];
+pub fn hemisphere_f32(
+    mut f: impl FnMut(V3<f32>) -> f32,
+    peaks: &[V3<f32>],
+    cfg: &Config,
+) -> Estimate {
+    let mut p = [DVec3::ZERO; MAX_PEAKS];
     let n = peaks.len().min(MAX_PEAKS);
-    for (w, p) in wide_peaks.iter_mut().zip(peaks) {
-        *w = p.as_dvec3();
+    for (w, q) in p.iter_mut().zip(peaks) {
+        *w = widen(*q).into();
     }
-    hemisphere(|w| f64::from(f(w.as_vec3())), &wide_peaks[..n], cfg)
+    hemisphere_glam(|w| f64::from(f(narrow(w))), &p[..n], cfg)
 }
 
 /// Mirror direction of a local-frame `wo` about the normal: `(-wo.x, -wo.y, wo.z)`.
@@ -468,7 +501,7 @@ fn mirror(wo: DVec3) -> DVec3 {
 /// rho = a. The normal and the mirror direction of `wo` are treated as peaks. A NaN or
 /// infinite component of `wo` gives [`Estimate::NAN`] (module docs, "Bad input").
 #[must_use]
-pub fn directional_albedo(wo: DVec3, f: impl FnMut(DVec3, DVec3) -> f64) -> Estimate {
+pub fn directional_albedo(wo: V3<f64>, f: impl FnMut(V3<f64>, V3<f64>) -> f64) -> Estimate {
     directional_albedo_with(wo, f, &Config::default())
 }
 
@@ -476,64 +509,60 @@ pub fn directional_albedo(wo: DVec3, f: impl FnMut(DVec3, DVec3) -> f64) -> Esti
 /// gives [`Estimate::NAN`].
 #[must_use]
 pub fn directional_albedo_with(
-    wo: DVec3,
-    mut f: impl FnMut(DVec3, DVec3) -> f64,
+    wo: V3<f64>,
+    mut f: impl FnMut(V3<f64>, V3<f64>) -> f64,
     cfg: &Config,
 ) -> Estimate {
+    let wo_g = DVec3::from(wo);
     // `f` may ignore wo (a Lambertian lobe): a NaN view must still give NaN.
-    if !finite_dir(wo) {
+    if !finite_dir(wo_g) {
         return Estimate::NAN;
     }
-    hemisphere(|wi| f(wo, wi) * wi.z, &[mirror(wo)], cfg)
+    hemisphere_glam(|wi| f(wo, wi.into()) * wi.z, &[mirror(wo_g)], cfg)
 }
 
-/// [`directional_albedo`] for an `f32` BRDF over `glam::Vec3` (see [`hemisphere_f32`]).
+/// [`directional_albedo`] for an `f32` BRDF over [`V3<f32>`] (see [`hemisphere_f32`]).
 ///
 /// ```
 /// use brdf::integrate::directional_albedo_f32;
-/// use brdf::glam::Vec3;
-/// let rho = directional_albedo_f32(Vec3::Z, |_wo, _wi| 0.8 / core::f32::consts::PI);
+/// use brdf::V3;
+/// let rho = directional_albedo_f32(V3::unit_z(), |_wo, _wi| 0.8 / core::f32::consts::PI);
 /// assert!((rho.value - 0.8).abs() < 1e-6);
 /// ```
 #[must_use]
-pub fn directional_albedo_f32(wo: Vec3, f: impl FnMut(Vec3, Vec3) -> f32) -> Estimate {
+pub fn directional_albedo_f32(wo: V3<f32>, f: impl FnMut(V3<f32>, V3<f32>) -> f32) -> Estimate {
     directional_albedo_with_f32(wo, f, &Config::default())
 }
 
-/// [`directional_albedo_with`] for an `f32` BRDF over `glam::Vec3` (see [`hemisphere_f32`]).
+/// [`directional_albedo_with`] for an `f32` BRDF over [`V3<f32>`] (see [`hemisphere_f32`]).
 #[must_use]
 pub fn directional_albedo_with_f32(
-    wo: Vec3,
-    mut f: impl FnMut(Vec3, Vec3) -> f32,
+    wo: V3<f32>,
+    mut f: impl FnMut(V3<f32>, V3<f32>) -> f32,
     cfg: &Config,
 ) -> Estimate {
-    directional_albedo_with(
-        wo.as_dvec3(),
-        |o, i| f64::from(f(o.as_vec3(), i.as_vec3())),
-        cfg,
-    )
+    directional_albedo_with(widen(wo), |_, i| f64::from(f(wo, narrow(i.into()))), cfg)
 }
 
 /// Projected area of a microfacet distribution: integral of D(m) cos(theta_m) dm over the upper
 /// hemisphere, which is 1 for a normalized NDF (Torrance and Sparrow 1967; Walter et al. 2007,
 /// "Microfacet Models for Refraction through Rough Surfaces", eq. 4).
 #[must_use]
-pub fn ndf_projected_area(mut d: impl FnMut(DVec3) -> f64) -> Estimate {
-    hemisphere(|m| d(m) * m.z, &[], &Config::default())
+pub fn ndf_projected_area(mut d: impl FnMut(V3<f64>) -> f64) -> Estimate {
+    hemisphere_glam(|m| d(m.into()) * m.z, &[], &Config::default())
 }
 
-/// [`ndf_projected_area`] for an `f32` NDF over `glam::Vec3` (see [`hemisphere_f32`]).
+/// [`ndf_projected_area`] for an `f32` NDF over [`V3<f32>`] (see [`hemisphere_f32`]).
 ///
 /// ```
 /// use brdf::integrate::ndf_projected_area_f32;
-/// use brdf::glam::Vec3;
 /// // The cosine-lobe "NDF" D(m) = 1 / pi is normalized: integral of cos / pi = 1.
 /// let e = ndf_projected_area_f32(|_m| core::f32::consts::FRAC_1_PI);
 /// assert!((e.value - 1.0).abs() < 1e-6);
 /// ```
 #[must_use]
-pub fn ndf_projected_area_f32(mut d: impl FnMut(Vec3) -> f32) -> Estimate {
-    ndf_projected_area(|m| f64::from(d(m.as_vec3())))
+pub fn ndf_projected_area_f32(mut d: impl FnMut(V3<f32>) -> f32) -> Estimate {
+    hemisphere_glam(|m| f64::from(d(narrow(m))) * m.z, &[], &Config::default())
 }
 
 /// Smith's weak white furnace: integral of G1(wo, m) D(m) max(0, wo.m) dm / cos(theta_o), which
@@ -555,23 +584,24 @@ pub fn ndf_projected_area_f32(mut d: impl FnMut(Vec3) -> f32) -> Estimate {
 /// actual error is usually below 1e-7.
 #[must_use]
 pub fn smith_weak_furnace(
-    wo: DVec3,
-    mut d: impl FnMut(DVec3) -> f64,
-    mut g1: impl FnMut(DVec3, DVec3) -> f64,
+    wo: V3<f64>,
+    mut d: impl FnMut(V3<f64>) -> f64,
+    mut g1: impl FnMut(V3<f64>, V3<f64>) -> f64,
 ) -> Estimate {
-    if wo.z <= 0.0 || !finite_dir(wo) {
+    let wo_g = DVec3::from(wo);
+    if wo.z <= 0.0 || !finite_dir(wo_g) {
         return Estimate::NAN;
     }
-    let e = hemisphere(
+    let e = hemisphere_glam(
         |m| {
-            let wo_dot_m = wo.dot(m);
+            let wo_dot_m = wo_g.dot(m);
             if wo_dot_m > 0.0 {
-                g1(wo, m) * d(m) * wo_dot_m
+                g1(wo, m.into()) * d(m.into()) * wo_dot_m
             } else {
                 0.0
             }
         },
-        &[wo],
+        &[wo_g],
         &Config::default(),
     );
     Estimate {
@@ -581,27 +611,27 @@ pub fn smith_weak_furnace(
     }
 }
 
-/// [`smith_weak_furnace`] for an `f32` NDF and masking function over `glam::Vec3` (see
+/// [`smith_weak_furnace`] for an `f32` NDF and masking function over [`V3<f32>`] (see
 /// [`hemisphere_f32`]). `wo` is widened to `f64` for the integration, and `g1` receives it
 /// as given.
 ///
 /// ```
 /// use brdf::integrate::smith_weak_furnace_f32;
-/// use brdf::glam::Vec3;
+/// use brdf::V3;
 /// // D = 1 / pi on the upper hemisphere with G1 = 1 at normal incidence: 1.
-/// let e = smith_weak_furnace_f32(Vec3::Z, |_m| core::f32::consts::FRAC_1_PI, |_wo, _m| 1.0);
+/// let e = smith_weak_furnace_f32(V3::unit_z(), |_m| core::f32::consts::FRAC_1_PI, |_wo, _m| 1.0);
 /// assert!((e.value - 1.0).abs() < 1e-5);
 /// ```
 #[must_use]
 pub fn smith_weak_furnace_f32(
-    wo: Vec3,
-    mut d: impl FnMut(Vec3) -> f32,
-    mut g1: impl FnMut(Vec3, Vec3) -> f32,
+    wo: V3<f32>,
+    mut d: impl FnMut(V3<f32>) -> f32,
+    mut g1: impl FnMut(V3<f32>, V3<f32>) -> f32,
 ) -> Estimate {
     smith_weak_furnace(
-        wo.as_dvec3(),
-        |m| f64::from(d(m.as_vec3())),
-        |_, m| f64::from(g1(wo, m.as_vec3())),
+        widen(wo),
+        |m| f64::from(d(narrow(m.into()))),
+        |_, m| f64::from(g1(wo, narrow(m.into()))),
     )
 }
 
@@ -634,7 +664,7 @@ pub struct Reciprocity {
     /// are zero count as 0; a non-finite value counts as +inf).
     pub max_rel: f64,
     /// The pair (a, b) where `max_rel` occurred.
-    pub worst: (DVec3, DVec3),
+    pub worst: (V3<f64>, V3<f64>),
     /// Number of ordered pairs checked.
     pub pairs: u64,
 }
@@ -669,10 +699,10 @@ pub const RECIPROCITY_DIRECTIONS: usize = 64;
 /// A maximum over a finite set, not an integral: it has no error estimate, and a zero result
 /// shows symmetry on these pairs only.
 #[must_use]
-pub fn reciprocity(mut f: impl FnMut(DVec3, DVec3) -> f64) -> Reciprocity {
+pub fn reciprocity(mut f: impl FnMut(V3<f64>, V3<f64>) -> f64) -> Reciprocity {
     let mut out = Reciprocity {
         max_rel: 0.0,
-        worst: (DVec3::Z, DVec3::Z),
+        worst: (V3::unit_z(), V3::unit_z()),
         pairs: 0,
     };
     for i in 0..RECIPROCITY_DIRECTIONS {
@@ -680,7 +710,10 @@ pub fn reciprocity(mut f: impl FnMut(DVec3, DVec3) -> f64) -> Reciprocity {
             if i == j {
                 continue;
             }
-            let (a, b) = (reciprocity_direction(i), reciprocity_direction(j));
+            let (a, b) = (
+                V3::from(reciprocity_direction(i)),
+                V3::from(reciprocity_direction(j)),
+            );
             let (ab, ba) = (f(a, b), f(b, a));
             out.pairs += 1;
             let rel = if !ab.is_finite() || !ba.is_finite() {
@@ -702,18 +735,18 @@ pub fn reciprocity(mut f: impl FnMut(DVec3, DVec3) -> f64) -> Reciprocity {
     out
 }
 
-/// [`reciprocity`] for an `f32` BRDF over `glam::Vec3`: `f` sees the same direction set
+/// [`reciprocity`] for an `f32` BRDF over [`V3<f32>`]: `f` sees the same direction set
 /// rounded to `f32` (both orders of a pair see the same two vectors), and
 /// [`Reciprocity::worst`] reports the `f64` directions they were rounded from.
 ///
 /// ```
 /// use brdf::integrate::reciprocity_f32;
-/// use brdf::glam::Vec3;
+/// use brdf::V3;
 /// // Phong-like, symmetric in its arguments: reciprocal to the last bit.
-/// let r = reciprocity_f32(|a: Vec3, b: Vec3| (a.z * b.z).max(0.0).powi(8));
+/// let r = reciprocity_f32(|a: V3<f32>, b: V3<f32>| (a.z * b.z).max(0.0).powi(8));
 /// assert_eq!(r.max_rel, 0.0);
 /// ```
 #[must_use]
-pub fn reciprocity_f32(mut f: impl FnMut(Vec3, Vec3) -> f32) -> Reciprocity {
-    reciprocity(|a, b| f64::from(f(a.as_vec3(), b.as_vec3())))
+pub fn reciprocity_f32(mut f: impl FnMut(V3<f32>, V3<f32>) -> f32) -> Reciprocity {
+    reciprocity(|a, b| f64::from(f(narrow(a.into()), narrow(b.into()))))
 }

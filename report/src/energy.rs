@@ -9,7 +9,6 @@ use brdf::ibl::energy;
 use brdf::integrate::directional_albedo;
 use brdf::material::MetallicRoughness;
 use brdf::{ParamError, V3};
-use glam::DVec3;
 
 /// One model's albedo grid.
 pub struct Grid {
@@ -27,9 +26,9 @@ pub struct Grid {
     pub stem: &'static str,
 }
 
-fn wo(theta_deg: f64) -> DVec3 {
+fn wo(theta_deg: f64) -> V3<f64> {
     let t = theta_deg.to_radians();
-    DVec3::new(t.sin(), 0.0, t.cos())
+    V3::new(t.sin(), 0.0, t.cos())
 }
 
 fn grid(
@@ -38,14 +37,14 @@ fn grid(
     roughness_label: &'static str,
     roughness: &[f64],
     theta: &[f64],
-    f: impl Fn(f64, DVec3, DVec3) -> Result<f64, ParamError>,
+    f: impl Fn(f64, V3<f64>, V3<f64>) -> Result<f64, ParamError>,
 ) -> Result<Grid, ParamError> {
     let mut albedo = Vec::new();
     for &r in roughness {
         let mut row = Vec::new();
         for &t in theta {
             // Validate the parameters once outside the integrand.
-            f(r, DVec3::Z, DVec3::Z)?;
+            f(r, V3::unit_z(), V3::unit_z())?;
             let a = directional_albedo(wo(t), |o, i| f(r, o, i).unwrap_or(f64::NAN)).value;
             row.push(a);
         }
@@ -73,7 +72,6 @@ pub fn grids(quick: bool) -> Result<Vec<Grid>, ParamError> {
             vec![0.0, 20.0, 40.0, 60.0, 70.0, 80.0, 85.0, 89.0],
         )
     };
-    let v = V3::from;
     Ok(vec![
         grid(
             "GGX Cook-Torrance, F = 1",
@@ -83,7 +81,7 @@ pub fn grids(quick: bool) -> Result<Vec<Grid>, ParamError> {
             &thetas,
             |a, o, i| {
                 let g = Ggx::new(a, a)?;
-                Ok(cook_torrance::eval(&g, v(o), v(i), |_| 1.0))
+                Ok(cook_torrance::eval(&g, o, i, |_| 1.0))
             },
         )?,
         grid(
@@ -94,7 +92,7 @@ pub fn grids(quick: bool) -> Result<Vec<Grid>, ParamError> {
             &thetas,
             |a, o, i| {
                 let b = Beckmann::new(a, a)?;
-                Ok(cook_torrance::eval(&b, v(o), v(i), |_| 1.0))
+                Ok(cook_torrance::eval(&b, o, i, |_| 1.0))
             },
         )?,
         grid(
@@ -105,7 +103,7 @@ pub fn grids(quick: bool) -> Result<Vec<Grid>, ParamError> {
             &thetas,
             |a, o, i| {
                 let g = Ggx::new(a, a)?;
-                Ok(cook_torrance::eval(&g, v(o), v(i), |_| 1.0)
+                Ok(cook_torrance::eval(&g, o, i, |_| 1.0)
                     + energy::kulla_conty_ggx(o.z, i.z, a, 1.0))
             },
         )?,
@@ -117,7 +115,7 @@ pub fn grids(quick: bool) -> Result<Vec<Grid>, ParamError> {
             &thetas,
             |r, o, i| {
                 let m = MetallicRoughness::new(V3::splat(1.0), 0.0, r)?;
-                Ok(m.eval(v(o), v(i)).y)
+                Ok(m.eval(o, i).y)
             },
         )?,
         grid(
@@ -128,7 +126,7 @@ pub fn grids(quick: bool) -> Result<Vec<Grid>, ParamError> {
             &thetas,
             |s, o, i| {
                 let e = Eon::new(1.0, s)?;
-                Ok(e.eval(v(o), v(i)))
+                Ok(e.eval(o, i))
             },
         )?,
     ])

@@ -3,6 +3,7 @@
 //! own and uses part of it.
 #![allow(dead_code)]
 
+use brdf::V3;
 use glam::DVec3;
 
 /// SplitMix64 (Steele, Lea, Flood 2014): a deterministic stream, so the chi-square statistic
@@ -16,6 +17,25 @@ impl Rng {
         z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
         ((z ^ (z >> 31)) >> 11) as f64 / (1u64 << 53) as f64
     }
+}
+
+/// `a . b` summed as glam's `DVec3::dot` sums it: three rounded products, two rounded sums.
+/// [`V3::dot`] fuses them (`mul_add`), which can move the last bit: the kernels the integrator
+/// tests hand to `brdf::integrate`, first written on `DVec3`, keep their results to the bit with
+/// this one.
+pub fn dot(a: V3<f64>, b: V3<f64>) -> f64 {
+    a.x * b.x + a.y * b.y + a.z * b.z
+}
+
+/// `|w|` as glam's `DVec3::length` forms it: the square root of [`dot`]`(w, w)`.
+pub fn length(w: V3<f64>) -> f64 {
+    dot(w, w).sqrt()
+}
+
+/// `w / |w|` as glam's `DVec3::normalize` forms it: `w` times the rounded `1 / `[`length`]`(w)`
+/// (not [`V3::normalize`], which scales by the largest component first).
+pub fn normalize(w: V3<f64>) -> V3<f64> {
+    w * (1.0 / length(w))
 }
 
 pub const NZ: usize = 16;

@@ -17,17 +17,14 @@ use brdf::ggx::Ggx;
 use brdf::integrate::{directional_albedo, reciprocity};
 use brdf::microfacet::Alpha;
 use brdf::microfacet::Microfacet;
-use glam::DVec3;
 
 const ALPHAS: [f64; 7] = [0.01, 0.05, 0.1, 0.25, 0.5, 0.75, 1.0];
 const THETAS_DEG: [f64; 6] = [0.0, 30.0, 60.0, 75.0, 85.0, 89.0];
 
 fn albedo(m: &(impl Microfacet<f64> + ?Sized), theta_deg: f64) -> (f64, f64) {
     let t = theta_deg.to_radians();
-    let wo = DVec3::new(t.sin(), 0.0, t.cos());
-    let e = directional_albedo(wo, |o, i| {
-        cook_torrance::eval(m, V3::from(o), V3::from(i), |_| 1.0)
-    });
+    let wo = V3::new(t.sin(), 0.0, t.cos());
+    let e = directional_albedo(wo, |o, i| cook_torrance::eval(m, o, i, |_| 1.0));
     (e.value, e.error)
 }
 
@@ -84,15 +81,15 @@ fn cook_torrance_is_reciprocal() {
     for (name, r) in [
         (
             "ggx dielectric",
-            reciprocity(|o, i| cook_torrance::dielectric(&ggx, V3::from(o), V3::from(i), 1.5)),
+            reciprocity(|o, i| cook_torrance::dielectric(&ggx, o, i, 1.5)),
         ),
         (
             "ggx conductor",
-            reciprocity(|o, i| cook_torrance::conductor(&ggx, V3::from(o), V3::from(i), 0.2, 3.0)),
+            reciprocity(|o, i| cook_torrance::conductor(&ggx, o, i, 0.2, 3.0)),
         ),
         (
             "beckmann dielectric",
-            reciprocity(|o, i| cook_torrance::dielectric(&beck, V3::from(o), V3::from(i), 1.33)),
+            reciprocity(|o, i| cook_torrance::dielectric(&beck, o, i, 1.33)),
         ),
     ] {
         println!(

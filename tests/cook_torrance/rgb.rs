@@ -371,9 +371,9 @@ fn rgb_forms_match_the_direction_path_at_the_same_geometry() {
 
 /// Directional albedo of a dot-product form over the hemisphere, with the dot products of the
 /// integrator's directions.
-fn albedo(wo: DVec3, f: impl Fn(f64, f64, f64, f64) -> f64) -> (f64, f64) {
+fn albedo(wo: V3<f64>, f: impl Fn(f64, f64, f64, f64) -> f64) -> (f64, f64) {
     let e = directional_albedo(wo, |o, i| {
-        let (h, vh) = ct::half_vector(V3::from(o), V3::from(i));
+        let (h, vh) = ct::half_vector(o, i);
         f(h.z, o.z, i.z, vh)
     });
     (e.value, e.error)
@@ -501,7 +501,7 @@ fn rgb_forms_conserve_energy() {
             print!("{a:>7}");
             for t in thetas {
                 let t = f64::to_radians(t);
-                let wo = DVec3::new(t.sin(), 0.0, t.cos());
+                let wo = V3::new(t.sin(), 0.0, t.cos());
                 let (rho, err) = albedo(wo, |nh, nv, nl, vh| f(nh, nv, nl, vh, a));
                 print!(" {rho:>9.6}");
                 assert!(

@@ -7,27 +7,29 @@
 //! -- --nocapture` prints the tables quoted in `src/diffuse/burley.rs`.
 #![cfg(all(feature = "diffuse", feature = "integrate"))]
 
+use brdf::V3;
 use brdf::diffuse::{Burley, BurleyRenormalized, burley, burley_renormalized};
 use brdf::integrate::{Estimate, directional_albedo};
-use glam::DVec3;
+
+use crate::common::dot;
 
 const ROUGHNESS: [f64; 7] = [0.0, 0.2, 0.4, 0.6, 0.8, 0.9, 1.0];
 /// View angles in degrees, up to 0.01 degree from the horizon.
 const THETA_DEG: [f64; 10] = [0.0, 30.0, 45.0, 60.0, 70.0, 80.0, 85.0, 88.0, 89.9, 89.99];
 
-fn wo(theta_deg: f64) -> DVec3 {
+fn wo(theta_deg: f64) -> V3<f64> {
     let t = theta_deg.to_radians();
-    DVec3::new(t.sin(), 0.0, t.cos())
+    V3::new(t.sin(), 0.0, t.cos())
 }
 
 fn albedo_burley(r: f64, theta_deg: f64) -> Estimate {
     let lobe = Burley::new(1.0, r).unwrap();
-    directional_albedo(wo(theta_deg), |o, i| lobe.eval(o.into(), i.into()))
+    directional_albedo(wo(theta_deg), |o, i| lobe.eval(o, i))
 }
 
 fn albedo_renormalized(r: f64, theta_deg: f64) -> Estimate {
     let lobe = BurleyRenormalized::new(1.0, r).unwrap();
-    directional_albedo(wo(theta_deg), |o, i| lobe.eval(o.into(), i.into()))
+    directional_albedo(wo(theta_deg), |o, i| lobe.eval(o, i))
 }
 
 /// The albedo table of one lobe: prints it, returns (max value, its r, its theta, largest
@@ -97,13 +99,13 @@ fn burley_albedo_at_normal_incidence_matches_closed_form() {
 /// float, so this also checks them against the closed form where `eval` cannot reach.
 #[test]
 fn burley_albedo_at_grazing_matches_closed_form() {
-    let grazing = DVec3::X;
+    let grazing = V3::new(1.0, 0.0, 0.0);
     let mut worst = 0.0_f64;
     for r in [0.0, 0.25, 0.5, 0.75, 0.9, 0.95, 1.0] {
         let limit = |a: f64, k: f64| k * (a + (a * a - a) / 21.0 + 11.0 * r * r / 504.0);
         let closed_b = limit(0.5 + r, 1.0);
         let closed_n = limit(1.5 * r, 1.0 - r * (1.0 - 1.0 / 1.51));
-        let l_dot_h = |o: DVec3, i: DVec3| ((1.0 + o.dot(i)) / 2.0).sqrt();
+        let l_dot_h = |o: V3<f64>, i: V3<f64>| ((1.0 + dot(o, i)) / 2.0).sqrt();
         let nv = f64::MIN_POSITIVE;
         let b = directional_albedo(grazing, |o, i| burley(nv, i.z, l_dot_h(o, i), 1.0, r));
         let n = directional_albedo(grazing, |o, i| {

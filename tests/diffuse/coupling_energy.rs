@@ -10,6 +10,7 @@
 //! coupling_energy:: -- --nocapture`
 #![cfg(all(feature = "diffuse", feature = "integrate"))]
 
+use brdf::V3;
 use brdf::diffuse::{
     ashikhmin_shirley, fresnel_mix, fresnel_weight_normalized, fresnel_weight_symmetric, lambert,
     shirley_coupled,
@@ -17,7 +18,8 @@ use brdf::diffuse::{
 use brdf::fresnel::schlick;
 use brdf::integrate::directional_albedo;
 use core::f64::consts::PI;
-use glam::DVec3;
+
+use crate::common::{dot, normalize};
 
 const THETA_DEG: [f64; 8] = [0.0, 30.0, 60.0, 75.0, 85.0, 88.0, 89.5, 89.9];
 const F0: [f64; 3] = [0.04, 0.2, 0.5];
@@ -27,20 +29,20 @@ const N: f64 = 20.0;
 /// every "<= 1".
 const TOL: f64 = 1e-5;
 
-fn wo(theta_deg: f64) -> DVec3 {
+fn wo(theta_deg: f64) -> V3<f64> {
     let t = theta_deg.to_radians();
-    DVec3::new(t.sin(), 0.0, t.cos())
+    V3::new(t.sin(), 0.0, t.cos())
 }
 
 /// Normalized modified Phong, (n + 2) / (2 pi) max(0, r.wi)^n around the mirror direction r of
 /// wo (Lewis 1994, "Making Shaders More Physically Plausible"): reciprocal, albedo 1 at
 /// normal incidence and below 1 elsewhere.
-fn phong(wo: DVec3, wi: DVec3) -> f64 {
-    let r = DVec3::new(-wo.x, -wo.y, wo.z);
-    (N + 2.0) / (2.0 * PI) * r.dot(wi).max(0.0).powf(N)
+fn phong(wo: V3<f64>, wi: V3<f64>) -> f64 {
+    let r = V3::new(-wo.x, -wo.y, wo.z);
+    (N + 2.0) / (2.0 * PI) * dot(r, wi).max(0.0).powf(N)
 }
 
-fn albedo(theta: f64, f: impl FnMut(DVec3, DVec3) -> f64) -> f64 {
+fn albedo(theta: f64, f: impl FnMut(V3<f64>, V3<f64>) -> f64) -> f64 {
     let e = directional_albedo(wo(theta), f);
     assert!(e.error < TOL, "error estimate {:e}", e.error);
     e.value
@@ -180,7 +182,7 @@ fn half_vector_fresnel_mix_albedo() {
         print!("F0 = {f0}: mix F(v.h) albedo:");
         for t in THETA_DEG {
             let a = albedo(t, |o, i| {
-                let v_dot_h = (o + i).normalize().dot(o);
+                let v_dot_h = dot(normalize(o + i), o);
                 fresnel_mix(lambert(o.z, i.z, 1.0), phong(o, i), schlick(f0, v_dot_h))
             });
             print!("  {t}: {a:.4}");

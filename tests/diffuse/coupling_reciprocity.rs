@@ -6,6 +6,7 @@
 //! coupling_reciprocity:: -- --nocapture`
 #![cfg(all(feature = "diffuse", feature = "integrate"))]
 
+use brdf::V3;
 use brdf::diffuse::{
     AshikhminShirley, ShirleyCoupled, fresnel_mix, fresnel_mix_schlick, fresnel_weight_normalized,
     fresnel_weight_symmetric, lambert,
@@ -13,7 +14,8 @@ use brdf::diffuse::{
 use brdf::fresnel::schlick;
 use brdf::integrate::{Reciprocity, reciprocity};
 use core::f64::consts::PI;
-use glam::DVec3;
+
+use crate::common::{dot, normalize};
 
 /// f64 bound for the reciprocal diffuse forms: the swapped evaluations differ in the order of
 /// a few roundings (2^-53 each).
@@ -25,9 +27,9 @@ const F0: [f64; 3] = [0.02, 0.04, 0.5];
 
 /// A reciprocal specular lobe with albedo <= 1: normalized modified Phong around the mirror
 /// direction, (n + 2) / (2 pi) max(0, r.wi)^n (Lewis 1994), with r.wi = r'.wo.
-fn phong(wo: DVec3, wi: DVec3, n: f64) -> f64 {
-    let r = DVec3::new(-wo.x, -wo.y, wo.z);
-    (n + 2.0) / (2.0 * PI) * r.dot(wi).max(0.0).powf(n)
+fn phong(wo: V3<f64>, wi: V3<f64>, n: f64) -> f64 {
+    let r = V3::new(-wo.x, -wo.y, wo.z);
+    (n + 2.0) / (2.0 * PI) * dot(r, wi).max(0.0).powf(n)
 }
 
 fn report(name: &str, rec: &Reciprocity) {
@@ -52,18 +54,12 @@ fn symmetric_couplings_are_reciprocal() {
                         * fresnel_weight_symmetric(schlick(f0, o.z), schlick(f0, i.z))
                 }),
             ),
-            (
-                "ShirleyCoupled",
-                reciprocity(|o, i| sh.eval(o.into(), i.into())),
-            ),
-            (
-                "AshikhminShirley",
-                reciprocity(|o, i| ash.eval(o.into(), i.into())),
-            ),
+            ("ShirleyCoupled", reciprocity(|o, i| sh.eval(o, i))),
+            ("AshikhminShirley", reciprocity(|o, i| ash.eval(o, i))),
             (
                 "mix F(v.h): lambert (1 - F) + phong F",
                 reciprocity(|o, i| {
-                    let v_dot_h = (o + i).normalize().dot(o);
+                    let v_dot_h = dot(normalize(o + i), o);
                     fresnel_mix_schlick(lambert(o.z, i.z, 0.9), phong(o, i, 20.0), f0, v_dot_h)
                 }),
             ),

@@ -4,22 +4,24 @@
 //! average albedo against a 1D quadrature; and the accuracy of the paper's fit of E_FON.
 #![cfg(all(feature = "diffuse", feature = "integrate"))]
 
+use brdf::V3;
 use brdf::diffuse::{
     eon, eon_albedo, eon_albedo_approx, eon_approx, eon_fon_albedo, eon_fon_albedo_approx,
     eon_fon_average_albedo,
 };
-use brdf::glam::DVec3;
 use brdf::integrate::directional_albedo;
 use core::f64::consts::PI;
 use std::fmt::Write;
+
+use crate::common::dot;
 
 const RHOS: [f64; 5] = [0.0, 0.25, 0.5, 0.8, 1.0];
 const SIGMAS: [f64; 5] = [0.0, 0.3, 0.6, 0.85, 1.0];
 const THETAS_DEG: [f64; 6] = [0.0, 30.0, 60.0, 80.0, 87.0, 89.0];
 
-fn wo(theta_deg: f64) -> DVec3 {
+fn wo(theta_deg: f64) -> V3<f64> {
     let t = theta_deg.to_radians();
-    DVec3::new(t.sin(), 0.0, t.cos())
+    V3::new(t.sin(), 0.0, t.cos())
 }
 
 type Kernel = fn(f64, f64, f64, f64, f64) -> f64;
@@ -39,7 +41,7 @@ fn compare(name: &str, f: Kernel, albedo: Albedo) -> f64 {
         for rho in RHOS {
             for t in THETAS_DEG {
                 let o = wo(t);
-                let e = directional_albedo(o, |a, b| f(a.z, b.z, a.dot(b), rho, sigma));
+                let e = directional_albedo(o, |a, b| f(a.z, b.z, dot(a, b), rho, sigma));
                 let d = (albedo(o.z, rho, sigma) - e.value).abs();
                 if d > row {
                     row = d;
@@ -80,12 +82,12 @@ fn eon_albedo_approx_matches_integration_within_fit_error() {
 /// Fujii's Oren-Nayar in the EON paper's normalization, written from its definition:
 /// f = (1/pi) A (1 + sigma s/t), A = 1/(1 + (1/2 - 2/(3 pi)) sigma), s = l.v - (n.l)(n.v),
 /// t = max(n.l, n.v) where s > 0, else 1.
-fn fujii(wo: DVec3, wi: DVec3, sigma: f64) -> f64 {
+fn fujii(wo: V3<f64>, wi: V3<f64>, sigma: f64) -> f64 {
     if wo.z <= 0.0 || wi.z <= 0.0 {
         return 0.0;
     }
     let a = 1.0 / (1.0 + (0.5 - 2.0 / (3.0 * PI)) * sigma);
-    let s = wo.dot(wi) - wo.z * wi.z;
+    let s = dot(wo, wi) - wo.z * wi.z;
     let t = if s > 0.0 { wo.z.max(wi.z) } else { 1.0 };
     a * (1.0 + sigma * s / t) / PI
 }

@@ -4,16 +4,18 @@
 //! the paper's fit of the FON albedo.
 #![cfg(all(feature = "diffuse", feature = "integrate"))]
 
+use brdf::V3;
 use brdf::diffuse::{eon, eon_approx};
-use brdf::glam::DVec3;
 use brdf::integrate::directional_albedo;
+
+use crate::common::dot;
 
 const SIGMAS: [f64; 7] = [0.0, 0.1, 0.25, 0.5, 0.75, 0.9, 1.0];
 const THETAS_DEG: [f64; 9] = [0.0, 15.0, 30.0, 45.0, 60.0, 75.0, 85.0, 88.0, 89.0];
 
-fn wo(theta_deg: f64) -> DVec3 {
+fn wo(theta_deg: f64) -> V3<f64> {
     let t = theta_deg.to_radians();
-    DVec3::new(t.sin(), 0.0, t.cos())
+    V3::new(t.sin(), 0.0, t.cos())
 }
 
 /// Max |albedo - 1| over the grid for one kernel, with the integrator's largest error estimate.
@@ -35,7 +37,7 @@ fn furnace(name: &str, f: fn(f64, f64, f64, f64, f64) -> f64) -> (f64, f64) {
         let _ = write!(out, "  {sigma:5.2} ");
         for t in THETAS_DEG {
             let o = wo(t);
-            let e = directional_albedo(o, |a, b| f(a.z, b.z, a.dot(b), 1.0, sigma));
+            let e = directional_albedo(o, |a, b| f(a.z, b.z, dot(a, b), 1.0, sigma));
             let dev = e.value - 1.0;
             let _ = write!(out, "{dev:>10.2e}");
             worst = worst.max(dev.abs());

@@ -5,6 +5,8 @@
 use brdf::diffuse::{eon, eon_approx};
 use brdf::integrate::reciprocity;
 
+use crate::common::dot;
+
 #[test]
 fn eon_is_reciprocal() {
     let mut worst = 0.0f64;
@@ -14,7 +16,7 @@ fn eon_is_reciprocal() {
     ] {
         for sigma in [0.0, 0.3, 0.7, 1.0] {
             for rho in [0.2, 0.9, 1.0] {
-                let r = reciprocity(|a, b| f(a.z, b.z, a.dot(b), rho, sigma));
+                let r = reciprocity(|a, b| f(a.z, b.z, dot(a, b), rho, sigma));
                 println!(
                     "{name} sigma {sigma} rho {rho}: max_rel = {:.2e} over {} pairs",
                     r.max_rel, r.pairs

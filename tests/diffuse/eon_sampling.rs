@@ -73,12 +73,8 @@ fn eon_pdfs_integrate_to_one() {
     for sigma in [0.0, 0.1, 0.5, 1.0] {
         for t in [0.0, 20.0, 45.0, 70.0, 85.0, 89.9] {
             let o = wo(t);
-            let m = hemisphere(|w| eon_pdf(o, V3::from(w), sigma), &[DVec3::from(o)], &cfg);
-            let c = hemisphere(
-                |w| eon_cltc_pdf(o, V3::from(w), sigma),
-                &[DVec3::from(o)],
-                &cfg,
-            );
+            let m = hemisphere(|w| eon_pdf(o, w, sigma), &[o], &cfg);
+            let c = hemisphere(|w| eon_cltc_pdf(o, w, sigma), &[o], &cfg);
             println!(
                 "sigma {sigma} theta_o {t}: integral of eon_pdf {:.9} (est. error {:.0e}), of eon_cltc_pdf {:.9} (est. error {:.0e})",
                 m.value, m.error, c.value, c.error

@@ -12,9 +12,11 @@
 //! oren_nayar_energy:: -- --nocapture`.
 #![cfg(all(feature = "diffuse", feature = "integrate"))]
 
+use brdf::V3;
 use brdf::diffuse::{oren_nayar, oren_nayar_fujii, oren_nayar_full};
-use brdf::glam::DVec3;
 use brdf::integrate::{Config, Estimate, directional_albedo_with};
+
+use crate::common::dot;
 
 const SIGMAS: [f64; 9] = [0.0, 0.1, 0.2, 0.25, 0.3, 0.5, 0.75, 1.0, 1.5];
 const FUJII_SIGMAS: [f64; 6] = [0.0, 0.2, 0.4, 0.6, 0.8, 1.0];
@@ -36,8 +38,8 @@ type Kernel = fn(f64, f64, f64, f64, f64) -> f64;
 fn albedo(f: Kernel, sigma: f64, theta_deg: f64) -> Estimate {
     let t = theta_deg.to_radians();
     // wo in the xz-plane: the phi kinks at +-90 deg then lie on the integrator's tangent axes.
-    let wo = DVec3::new(t.sin(), 0.0, t.cos());
-    directional_albedo_with(wo, |wo, wi| f(wo.z, wi.z, wo.dot(wi), 1.0, sigma), &cfg())
+    let wo = V3::new(t.sin(), 0.0, t.cos());
+    directional_albedo_with(wo, |wo, wi| f(wo.z, wi.z, dot(wo, wi), 1.0, sigma), &cfg())
 }
 
 /// Prints a table and returns rows[sigma][theta] = (value, error).

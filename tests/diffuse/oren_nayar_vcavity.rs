@@ -23,10 +23,12 @@
 //! oren_nayar_vcavity:: -- --nocapture` prints the table.
 #![cfg(all(feature = "diffuse", feature = "integrate"))]
 
+use brdf::V3;
 use brdf::diffuse::{oren_nayar, oren_nayar_full};
-use brdf::glam::DVec3;
 use brdf::integrate::{Config, hemisphere};
 use core::f64::consts::PI;
+
+use crate::common::dot;
 
 fn cfg() -> Config {
     Config {
@@ -37,15 +39,15 @@ fn cfg() -> Config {
 }
 
 /// The V-cavity direct term as a BRDF (rho = 1): L1 / (E0 cos(theta_i)).
-fn vcavity_l1(v: DVec3, l: DVec3, sigma: f64) -> (f64, f64) {
-    let p = |a: DVec3| {
+fn vcavity_l1(v: V3<f64>, l: V3<f64>, sigma: f64) -> (f64, f64) {
+    let p = |a: V3<f64>| {
         let t = a.z.clamp(-1.0, 1.0).acos();
         (-t * t / (2.0 * sigma * sigma)).exp()
     };
     let norm = hemisphere(p, &[], &cfg());
     let radiance = hemisphere(
         |a| {
-            let (sa, va) = (l.dot(a), v.dot(a));
+            let (sa, va) = (dot(l, a), dot(v, a));
             if sa <= 0.0 || va <= 0.0 {
                 return 0.0;
             }
@@ -62,9 +64,9 @@ fn vcavity_l1(v: DVec3, l: DVec3, sigma: f64) -> (f64, f64) {
 /// Bound on the deviation for phi in {0, 90} deg (measured maximum plus ~20 %).
 const BACK_BOUND: f64 = 0.09;
 
-fn dir(theta_deg: f64, phi_deg: f64) -> DVec3 {
+fn dir(theta_deg: f64, phi_deg: f64) -> V3<f64> {
     let (t, p) = (theta_deg.to_radians(), phi_deg.to_radians());
-    DVec3::new(t.sin() * p.cos(), t.sin() * p.sin(), t.cos())
+    V3::new(t.sin() * p.cos(), t.sin() * p.sin(), t.cos())
 }
 
 #[test]
@@ -84,9 +86,9 @@ fn full_model_l1_fits_the_v_cavity_integral() {
                     let (v, l) = (dir(to, 0.0), dir(ti, ph));
                     let (reference, err) = vcavity_l1(v, l, sigma);
                     est = est.max(err / reference);
-                    let k = |rho| oren_nayar_full(v.z, l.z, v.dot(l), rho, sigma);
+                    let k = |rho| oren_nayar_full(v.z, l.z, dot(v, l), rho, sigma);
                     let full_l1 = 4.0 * k(0.5) - k(1.0);
-                    let q = oren_nayar(v.z, l.z, v.dot(l), 1.0, sigma);
+                    let q = oren_nayar(v.z, l.z, dot(v, l), 1.0, sigma);
                     // In units of the Lambertian value 1/pi: the relative error is meaningless
                     // where forward-grazing shadowing drives the integral towards 0.
                     let e = (full_l1 - reference).abs() * PI;

@@ -15,10 +15,12 @@
 //! prints the figures.
 #![cfg(all(feature = "ibl", feature = "integrate"))]
 
+use brdf::V3;
 use brdf::ggx;
-use brdf::glam::DVec3;
 use brdf::ibl::dfg;
 use brdf::integrate::{Config, directional_albedo_with};
+
+use crate::common::{dot, normalize};
 
 const N: usize = 64;
 /// Gauss-Legendre nodes per u panel and phi intervals of the reference rule.
@@ -213,13 +215,13 @@ fn dfg_agrees_with_adaptive_cubature_of_the_brdf() {
     for j in [7, 15, 31, 47, 63] {
         for i in [0, 5, 21, 42, 63] {
             let (nv, alpha) = cell(i, j);
-            let wo = DVec3::new(((1.0 - nv) * (1.0 + nv)).sqrt(), 0.0, nv);
+            let wo = V3::new(((1.0 - nv) * (1.0 + nv)).sqrt(), 0.0, nv);
             let term = |weight: fn(f64) -> f64| {
                 directional_albedo_with(
                     wo,
                     |o, l| {
-                        let h = (o + l).normalize();
-                        let vh = o.dot(h);
+                        let h = normalize(o + l);
+                        let vh = dot(o, h);
                         let fc = (1.0 - vh.clamp(0.0, 1.0)).powi(5);
                         ggx::d(h.z, alpha) * ggx::v_correlated(o.z, l.z, alpha) * weight(fc)
                     },

@@ -3,13 +3,13 @@
 //! for Schlick F0 (dielectric and coloured) and the exact conductor Fresnel with its F_avg.
 #![cfg(all(feature = "ibl", feature = "integrate", feature = "cook-torrance"))]
 
+use brdf::V3;
 use brdf::cook_torrance;
 use brdf::fresnel;
 use brdf::ggx::Ggx;
 use brdf::ibl::energy::{fresnel_avg_conductor, fresnel_avg_schlick, kulla_conty_ggx};
 use brdf::integrate::directional_albedo;
 use brdf::microfacet::ALPHA_MIN;
-use brdf::{V3, glam::DVec3};
 
 /// A Fresnel term of v.h.
 type Fresnel = Box<dyn Fn(f64) -> f64>;
@@ -45,10 +45,9 @@ fn compensated_albedo_never_exceeds_one() {
             let g = Ggx::isotropic(alpha).unwrap();
             for theta in [0.0f64, 45.0, 70.0, 85.0, 89.0] {
                 let t = theta.to_radians();
-                let wo = DVec3::new(t.sin(), 0.0, t.cos());
+                let wo = V3::new(t.sin(), 0.0, t.cos());
                 let r = directional_albedo(wo, |o, i| {
-                    cook_torrance::eval(&g, V3::from(o), V3::from(i), f)
-                        + kulla_conty_ggx(o.z, i.z, alpha, *f_avg)
+                    cook_torrance::eval(&g, o, i, f) + kulla_conty_ggx(o.z, i.z, alpha, *f_avg)
                 });
                 hi = hi.max(r.value);
                 // 0.002: the table's lookup error (tests/ibl/energy_tables.rs), which is all

@@ -11,7 +11,6 @@ use brdf::ibl::energy::{Albedo, Reflectance};
 use brdf::ibl::energy::{e_ggx, e_ggx_estimate, fdez_aguera, kulla_conty_ggx, turquin_scale};
 use brdf::integrate::directional_albedo;
 use brdf::microfacet::ALPHA_MIN;
-use glam::DVec3;
 
 const THETAS_DEG: [f64; 6] = [0.0, 30.0, 60.0, 75.0, 80.0, 85.0];
 
@@ -20,14 +19,14 @@ fn alphas() -> impl Iterator<Item = f64> {
     (0..=20).map(|k| (f64::from(k) * 0.05).max(ALPHA_MIN))
 }
 
-fn wo(theta_deg: f64) -> DVec3 {
+fn wo(theta_deg: f64) -> V3<f64> {
     let t = theta_deg.to_radians();
-    DVec3::new(t.sin(), 0.0, t.cos())
+    V3::new(t.sin(), 0.0, t.cos())
 }
 
 /// Directional albedo of `f` at `theta_o`, with the integrator's error estimate.
 fn albedo(theta: f64, f: impl Fn(V3<f64>, V3<f64>) -> f64) -> (f64, f64) {
-    let r = directional_albedo(wo(theta), |o, i| f(V3::from(o), V3::from(i)));
+    let r = directional_albedo(wo(theta), f);
     (r.value, r.error)
 }
 

@@ -2,7 +2,6 @@
 //! the direction pairs of `integrate::reciprocity`.
 #![cfg(all(feature = "ibl", feature = "integrate", feature = "cook-torrance"))]
 
-use brdf::V3;
 use brdf::cook_torrance;
 use brdf::fresnel;
 use brdf::ggx::Ggx;
@@ -16,7 +15,7 @@ fn compensated_ggx_is_reciprocal() {
         let f_avg = fresnel_avg_schlick(0.5, 1.0);
         let lobe = reciprocity(|o, i| kulla_conty_ggx(o.z, i.z, alpha, f_avg));
         let full = reciprocity(|o, i| {
-            cook_torrance::eval(&g, V3::from(o), V3::from(i), |c| fresnel::schlick(0.5, c))
+            cook_torrance::eval(&g, o, i, |c| fresnel::schlick(0.5, c))
                 + kulla_conty_ggx(o.z, i.z, alpha, f_avg)
         });
         println!(

@@ -3,13 +3,13 @@
 //! the single-scattering one. Prints the figures.
 #![cfg(all(feature = "ibl", feature = "integrate", feature = "cook-torrance"))]
 
+use brdf::V3;
 use brdf::cook_torrance;
 use brdf::fresnel;
 use brdf::ggx::Ggx;
 use brdf::ibl::energy::{AverageAlbedo, Reflectance};
 use brdf::ibl::energy::{e_avg_ggx, fresnel_avg_schlick, kulla_conty_fresnel, kulla_conty_ggx};
 use brdf::integrate::directional_albedo;
-use brdf::{V3, glam::DVec3};
 
 /// A gold-like F0 (linear Rec.709), as in glTF sample materials.
 const GOLD: [f64; 3] = [1.0, 0.78, 0.34];
@@ -43,14 +43,14 @@ fn compensation_saturates_a_gold_like_metal() {
         let g = Ggx::isotropic(alpha).unwrap();
         for theta in [0.0f64, 60.0] {
             let t = theta.to_radians();
-            let wo = DVec3::new(t.sin(), 0.0, t.cos());
+            let wo = V3::new(t.sin(), 0.0, t.cos());
             let mut ss = [0.0; 3];
             let mut ms = [0.0; 3];
             for c in 0..3 {
                 let f0 = GOLD[c];
                 let f_avg = fresnel_avg_schlick(f0, 1.0);
-                let single = |o: DVec3, i: DVec3| {
-                    cook_torrance::eval(&g, V3::from(o), V3::from(i), |vh| fresnel::schlick(f0, vh))
+                let single = |o: V3<f64>, i: V3<f64>| {
+                    cook_torrance::eval(&g, o, i, |vh| fresnel::schlick(f0, vh))
                 };
                 ss[c] = directional_albedo(wo, single).value;
                 ms[c] = directional_albedo(wo, |o, i| {

@@ -14,7 +14,6 @@ use brdf::ibl::energy::{
 };
 use brdf::integrate::directional_albedo;
 use brdf::microfacet::ALPHA_MIN;
-use glam::DVec3;
 
 /// Samples the built-in tables were baked with (module docs of `ibl::energy`).
 const BAKED_SAMPLES: u32 = 65536;
@@ -51,10 +50,8 @@ fn built_in_tables_are_what_the_builders_produce() {
 
 fn albedo_by_cubature(mu: f64, alpha: f64) -> (f64, f64) {
     let g = Ggx::isotropic(alpha).unwrap();
-    let wo = DVec3::new(((1.0 - mu) * (1.0 + mu)).sqrt(), 0.0, mu);
-    let r = directional_albedo(wo, |o, i| {
-        cook_torrance::eval(&g, V3::from(o), V3::from(i), |_| 1.0)
-    });
+    let wo = V3::new(((1.0 - mu) * (1.0 + mu)).sqrt(), 0.0, mu);
+    let r = directional_albedo(wo, |o, i| cook_torrance::eval(&g, o, i, |_| 1.0));
     (r.value, r.error)
 }
 

@@ -10,7 +10,6 @@ use brdf::frame::Frame;
 use brdf::ibl::irradiance::{self, Sh9, project, sh9_basis};
 use brdf::integrate::{Config, hemisphere};
 use core::f64::consts::PI;
-use glam::DVec3;
 
 const ZENITH: V3<f64> = V3 {
     x: 0.25,
@@ -69,12 +68,7 @@ fn sky_quadrature_agrees_with_adaptive_cubature() {
             max_evals: 4_000_000,
         };
         let ch = |c: fn(V3<f64>) -> f64| {
-            hemisphere(
-                |w: DVec3| c(sky(frame.to_world(V3::from(w)))) * w.z,
-                &[],
-                &cfg,
-            )
-            .value
+            hemisphere(|w: V3<f64>| c(sky(frame.to_world(w))) * w.z, &[], &cfg).value
         };
         let want = V3::new(ch(|v| v.x), ch(|v| v.y), ch(|v| v.z));
         worst = worst.max(rel(q, want));

@@ -32,8 +32,8 @@ fn unfold(w: DVec3) -> DVec3 {
 fn prefilter_pdf_integrates_to_one_over_the_sphere() {
     for alpha in [0.05, 0.25, 0.5, 1.0] {
         let upper = hemisphere(
-            |w| prefilter::pdf(V3::from(w), alpha),
-            &[DVec3::Z],
+            |w| prefilter::pdf(w, alpha),
+            &[V3::unit_z()],
             &Config::default(),
         );
         let lower = hemisphere(

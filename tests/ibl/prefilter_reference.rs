@@ -10,43 +10,43 @@ use brdf::frame::Frame;
 use brdf::ggx;
 use brdf::ibl::prefilter;
 use brdf::integrate::{Config, hemisphere};
-use glam::DVec3;
+
+use crate::common::normalize;
 
 /// A smooth, positive, non-symmetric environment (world space): a degree-2 polynomial.
-fn env(l: DVec3) -> f64 {
+fn env(l: V3<f64>) -> f64 {
     1.0 + 0.5 * l.x + 0.3 * l.y + 0.8 * l.z * l.z + 0.4 * l.x * l.z
 }
 
 /// Karis's weighted estimator with n samples around the world direction r.
-fn estimate(r: DVec3, n: u32, alpha: f64) -> f64 {
-    let frame = Frame::from_normal(V3::from(r));
+fn estimate(r: V3<f64>, n: u32, alpha: f64) -> f64 {
+    let frame = Frame::from_normal(r);
     let (mut num, mut den) = (0.0, 0.0);
     for s in prefilter::samples(n, alpha) {
-        let l: DVec3 = frame.to_world(s.dir).into();
-        num += env(l) * s.weight;
+        num += env(frame.to_world(s.dir)) * s.weight;
         den += s.weight;
     }
     num / den
 }
 
 /// The same limit by cubature over the hemisphere around r.
-fn reference(r: DVec3, alpha: f64) -> f64 {
-    let frame = Frame::from_normal(V3::from(r));
+fn reference(r: V3<f64>, alpha: f64) -> f64 {
+    let frame = Frame::from_normal(r);
     let cfg = Config {
         abs_tol: 1e-12,
         rel_tol: 1e-10,
         max_evals: 4_000_000,
     };
-    let kernel = |w: DVec3| {
+    let kernel = |w: V3<f64>| {
         let hz = (0.5 * (1.0 + w.z)).sqrt();
         w.z * ggx::d(hz, alpha) / 4.0
     };
     let num = hemisphere(
-        |w| env(frame.to_world(V3::from(w)).into()) * kernel(w),
-        &[DVec3::Z],
+        |w| env(frame.to_world(w)) * kernel(w),
+        &[V3::unit_z()],
         &cfg,
     );
-    let den = hemisphere(kernel, &[DVec3::Z], &cfg);
+    let den = hemisphere(kernel, &[V3::unit_z()], &cfg);
     assert!(num.error < 1e-8 * num.value && den.error < 1e-8 * den.value);
     num.value / den.value
 }
@@ -54,10 +54,10 @@ fn reference(r: DVec3, alpha: f64) -> f64 {
 #[test]
 fn prefilter_samples_converge_to_the_ggx_prefiltered_environment() {
     let dirs = [
-        DVec3::Z,
-        DVec3::new(0.6, 0.0, 0.8),
-        DVec3::new(-0.48, 0.64, 0.6),
-        DVec3::new(0.0, 0.8, -0.6),
+        V3::unit_z(),
+        V3::new(0.6, 0.0, 0.8),
+        V3::new(-0.48, 0.64, 0.6),
+        V3::new(0.0, 0.8, -0.6),
     ];
     // Bounds at 1.25x the measured worst error of each row (printed below), rounded up: the
     // Hammersley set's error decays like log(N) / N, and a lost Jacobian, a wrong weight or a
@@ -77,7 +77,7 @@ fn prefilter_samples_converge_to_the_ggx_prefiltered_environment() {
     for (alpha, n, bound) in rows {
         let mut worst = 0.0_f64;
         for r in dirs {
-            let r = r.normalize();
+            let r = normalize(r);
             let (e, want) = (estimate(r, n, alpha), reference(r, alpha));
             worst = worst.max((e - want).abs() / want);
         }

@@ -3,7 +3,7 @@
 //! a NaN or negative tolerance gives a NaN estimate and a NaN error, never a plausible value.
 #![cfg(feature = "integrate")]
 
-use brdf::glam::{DVec3, Vec3};
+use brdf::V3;
 use brdf::integrate::{
     Config, Estimate, directional_albedo, directional_albedo_f32, directional_albedo_with,
     directional_albedo_with_f32, hemisphere, hemisphere_f32, smith_weak_furnace,
@@ -28,14 +28,19 @@ fn cfg() -> Config {
     }
 }
 
+/// `w` rounded to `f32`.
+fn narrow(w: V3<f64>) -> V3<f32> {
+    w.map(|c| c as f32)
+}
+
 /// Every component of a valid direction replaced by each bad value in turn.
-fn bad_dirs(w: DVec3) -> Vec<(String, DVec3)> {
+fn bad_dirs(w: V3<f64>) -> Vec<(String, V3<f64>)> {
     let mut out = Vec::new();
     for i in 0..3 {
         for b in BAD {
             let mut v = w.to_array();
             v[i] = b;
-            out.push((format!("component {i} = {b}"), DVec3::from_array(v)));
+            out.push((format!("component {i} = {b}"), V3::from(v)));
         }
     }
     out
@@ -43,8 +48,8 @@ fn bad_dirs(w: DVec3) -> Vec<(String, DVec3)> {
 
 #[test]
 fn smith_weak_furnace_with_a_bad_view_component_is_nan() {
-    let wo = DVec3::new(0.36, 0.48, 0.8);
-    let d = |m: DVec3| {
+    let wo = V3::new(0.36, 0.48, 0.8);
+    let d = |m: V3<f64>| {
         if m.z > 0.0 {
             core::f64::consts::FRAC_1_PI
         } else {
@@ -52,10 +57,10 @@ fn smith_weak_furnace_with_a_bad_view_component_is_nan() {
         }
     };
     // The good view integrates (a plausible value is what a NaN must not become).
-    assert!((smith_weak_furnace(DVec3::Z, d, |_, _| 1.0).value - 1.0).abs() < 1e-3);
+    assert!((smith_weak_furnace(V3::unit_z(), d, |_, _| 1.0).value - 1.0).abs() < 1e-3);
     for (what, w) in bad_dirs(wo) {
         assert_nan(&what, smith_weak_furnace(w, d, |_, _| 1.0));
-        let w32 = w.as_vec3();
+        let w32 = narrow(w);
         assert_nan(
             &format!("f32 {what}"),
             smith_weak_furnace_f32(w32, |_| core::f32::consts::FRAC_1_PI, |_, _| 1.0),
@@ -66,23 +71,23 @@ fn smith_weak_furnace_with_a_bad_view_component_is_nan() {
 #[test]
 fn directional_albedo_with_a_bad_view_component_is_nan() {
     // A Lambertian lobe ignores wo: the view's NaN must still reach the estimate.
-    let lambert = |_wo: DVec3, _wi: DVec3| 0.5 * core::f64::consts::FRAC_1_PI;
-    let lambert32 = |_wo: Vec3, _wi: Vec3| 0.5 * core::f32::consts::FRAC_1_PI;
-    for (what, w) in bad_dirs(DVec3::new(0.36, 0.48, 0.8)) {
+    let lambert = |_wo: V3<f64>, _wi: V3<f64>| 0.5 * core::f64::consts::FRAC_1_PI;
+    let lambert32 = |_wo: V3<f32>, _wi: V3<f32>| 0.5 * core::f32::consts::FRAC_1_PI;
+    for (what, w) in bad_dirs(V3::new(0.36, 0.48, 0.8)) {
         assert_nan(&what, directional_albedo(w, lambert));
         assert_nan(&what, directional_albedo_with(w, lambert, &cfg()));
-        assert_nan(&what, directional_albedo_f32(w.as_vec3(), lambert32));
+        assert_nan(&what, directional_albedo_f32(narrow(w), lambert32));
         assert_nan(
             &what,
-            directional_albedo_with_f32(w.as_vec3(), lambert32, &cfg()),
+            directional_albedo_with_f32(narrow(w), lambert32, &cfg()),
         );
     }
 }
 
 #[test]
 fn a_nan_or_negative_tolerance_gives_a_nan_estimate() {
-    let lambert = |_wo: DVec3, _wi: DVec3| 0.5 * core::f64::consts::FRAC_1_PI;
-    let lambert32 = |_wo: Vec3, _wi: Vec3| 0.5 * core::f32::consts::FRAC_1_PI;
+    let lambert = |_wo: V3<f64>, _wi: V3<f64>| 0.5 * core::f64::consts::FRAC_1_PI;
+    let lambert32 = |_wo: V3<f32>, _wi: V3<f32>| 0.5 * core::f32::consts::FRAC_1_PI;
     for bad in [f64::NAN, -1e-6, f64::NEG_INFINITY] {
         for c in [
             Config {
@@ -97,8 +102,11 @@ fn a_nan_or_negative_tolerance_gives_a_nan_estimate() {
             let what = format!("{c:?}");
             assert_nan(&what, hemisphere(|w| w.z, &[], &c));
             assert_nan(&what, hemisphere_f32(|w| w.z, &[], &c));
-            assert_nan(&what, directional_albedo_with(DVec3::Z, lambert, &c));
-            assert_nan(&what, directional_albedo_with_f32(Vec3::Z, lambert32, &c));
+            assert_nan(&what, directional_albedo_with(V3::unit_z(), lambert, &c));
+            assert_nan(
+                &what,
+                directional_albedo_with_f32(V3::unit_z(), lambert32, &c),
+            );
         }
     }
 }
@@ -123,8 +131,8 @@ fn an_infinite_or_zero_tolerance_is_meaningful() {
 
 #[test]
 fn a_bad_peak_gives_a_nan_estimate() {
-    for (what, p) in bad_dirs(DVec3::new(0.6, 0.0, 0.8)) {
-        assert_nan(&what, hemisphere(|w| w.z, &[DVec3::Z, p], &cfg()));
-        assert_nan(&what, hemisphere_f32(|w| w.z, &[p.as_vec3()], &cfg()));
+    for (what, p) in bad_dirs(V3::new(0.6, 0.0, 0.8)) {
+        assert_nan(&what, hemisphere(|w| w.z, &[V3::unit_z(), p], &cfg()));
+        assert_nan(&what, hemisphere_f32(|w| w.z, &[narrow(p)], &cfg()));
     }
 }

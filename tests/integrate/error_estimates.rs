@@ -21,7 +21,8 @@ use brdf::integrate::{
 };
 use brdf::microfacet::{ALPHA_MIN, Microfacet};
 use core::f64::consts::{FRAC_PI_2, PI};
-use glam::DVec3;
+
+use crate::common::dot;
 
 /// Below this the actual error is the rounding of summing up to 4096 rectangles of terms
 /// <= |exact| (a few hundred ULP at worst), not the rule's: no estimate is asked to cover it,
@@ -134,9 +135,9 @@ fn assert_honest(title: &str, rows: &[Row]) {
 }
 
 /// A direction at `theta_deg` from the normal and azimuth `phi` (radians).
-fn dir_at(theta_deg: f64, phi: f64) -> DVec3 {
+fn dir_at(theta_deg: f64, phi: f64) -> V3<f64> {
     let (s, c) = theta_deg.to_radians().sin_cos();
-    DVec3::new(s * phi.cos(), s * phi.sin(), c)
+    V3::new(s * phi.cos(), s * phi.sin(), c)
 }
 
 /// The azimuth the crate's other integrator tests use, off both tangent axes (where the
@@ -257,8 +258,8 @@ fn anisotropic_lobe_estimate_bounds_the_actual_error() {
     for (ax, ay) in [(0.05, 0.5), (0.5, 0.05), (0.01, 1.0), (0.3, 0.003)] {
         let g = Ggx::new(ax, ay).unwrap();
         let b = Beckmann::new(ax, ay).unwrap();
-        let dg = |m: DVec3| g.d(V3::from(m));
-        let db = |m: DVec3| b.d(V3::from(m));
+        let dg = |m: V3<f64>| g.d(m);
+        let db = |m: V3<f64>| b.d(m);
         let area = ndf_projected_area(dg);
         rows.push(Row::new(
             format!("ggx area {ax}x{ay}"),
@@ -275,17 +276,17 @@ fn anisotropic_lobe_estimate_bounds_the_actual_error() {
         ));
         for theta in [30.0, 70.0, 89.0] {
             let wo = dir_at(theta, PHI);
-            let e = hemisphere(|m| dg(m) * wo.dot(m), &[wo], &cfg);
+            let e = hemisphere(|m| dg(m) * dot(wo, m), &[wo], &cfg);
             let case = format!("ggx signed proj {ax}x{ay} @ {theta}");
             rows.push(Row::new(case, wo.z, e, Scale::Raw));
-            let e = hemisphere(|m| db(m) * wo.dot(m), &[wo], &cfg);
+            let e = hemisphere(|m| db(m) * dot(wo, m), &[wo], &cfg);
             let case = format!("beckmann signed proj {ax}x{ay} @ {theta}");
             rows.push(Row::new(case, wo.z, e, Scale::Raw));
-            let g1 = g.g1(V3::from(wo));
+            let g1 = g.g1(wo);
             let e = smith_weak_furnace(wo, dg, |_, _| g1);
             let case = format!("ggx furnace {ax}x{ay} @ {theta}");
             rows.push(Row::new(case, 1.0, e, Scale::Kink));
-            let g1 = b.g1(V3::from(wo));
+            let g1 = b.g1(wo);
             let e = smith_weak_furnace(wo, db, |_, _| g1);
             let case = format!("beckmann furnace {ax}x{ay} @ {theta}");
             rows.push(Row::new(case, 1.0, e, Scale::Kink));
@@ -316,8 +317,8 @@ fn kink_safety_covers_the_sweep_of_ggx_and_beckmann_furnaces() {
                     for i in 0..steps {
                         let theta = lo + 0.02 * i as f64;
                         let wo = dir_at(theta, phi);
-                        let g1 = m.g1(V3::from(wo));
-                        let e = smith_weak_furnace(wo, |h| m.d(V3::from(h)), |_, _| g1);
+                        let g1 = m.g1(wo);
+                        let e = smith_weak_furnace(wo, |h| m.d(h), |_, _| g1);
                         let actual = (e.value - 1.0).abs();
                         let raw_under = actual / (e.error / KINK_SAFETY);
                         n += 1;

@@ -1,9 +1,8 @@
-//! The `_f32` integrators (f32 kernels over `glam::Vec3`) give the estimates of their f64 /
-//! `DVec3` twins up to the kernel's own f32 rounding, and both match the closed forms: one
+//! The `_f32` integrators (f32 kernels over `V3<f32>`) give the estimates of their f64 /
+//! `V3<f64>` twins up to the kernel's own f32 rounding, and both match the closed forms: one
 //! kernel, written once over `V3<T>`, integrated through both entry points.
 #![cfg(feature = "integrate")]
 
-use brdf::glam::{DVec3, Vec3};
 use brdf::integrate::{self, Config, Estimate};
 use brdf::{Real, V3};
 use core::f64::consts::PI;
@@ -52,10 +51,9 @@ const F32_ROUNDING: f64 = 1e-5;
 fn f32_directional_albedo_matches_f64_and_the_closed_form() {
     for theta_o in [0.0_f64, 0.4, 0.9, 1.3, 1.55] {
         let (s, c) = theta_o.sin_cos();
-        let wo = DVec3::new(0.8 * s, 0.6 * s, c);
-        let e64 = integrate::directional_albedo(wo, |o, i| tilted(o.into(), i.into()));
-        let e32 =
-            integrate::directional_albedo_f32(wo.as_vec3(), |o, i| tilted(o.into(), i.into()));
+        let wo = V3::new(0.8 * s, 0.6 * s, c);
+        let e64 = integrate::directional_albedo(wo, tilted);
+        let e32 = integrate::directional_albedo_f32(wo.map(|x| x as f32), tilted);
         let exact = 1.0 + 0.5 * wo.x;
         let rel = report(&format!("albedo theta_o = {theta_o}"), e64, e32, exact);
         assert!(rel <= F32_ROUNDING, "f32 albedo off f64 by {rel:.2e}");
@@ -75,8 +73,8 @@ fn f32_directional_albedo_matches_f64_and_the_closed_form() {
         rel_tol: 1e-4,
         ..Config::default()
     };
-    let wo = Vec3::new(0.6, 0.0, 0.8);
-    let e = integrate::directional_albedo_with_f32(wo, |o, i| tilted(o.into(), i.into()), &cfg);
+    let wo = V3::new(0.6, 0.0, 0.8);
+    let e = integrate::directional_albedo_with_f32(wo, tilted, &cfg);
     assert!((e.value - 1.3).abs() <= 1e-3, "albedo with cfg {}", e.value);
 }
 
@@ -88,15 +86,15 @@ fn f32_hemisphere_passes_its_peaks_to_the_partition() {
     // the lobe (the estimate is 0), so this fails if the f32 entry point drops its peaks.
     // |w - p|^2 is summed from component differences: 1 - w.p would cancel in f32.
     let s = 1e-6_f64;
-    let p = DVec3::new(0.5_f64.sin() * 0.6, 0.5_f64.sin() * 0.8, 0.5_f64.cos());
+    let p = V3::new(0.5_f64.sin() * 0.6, 0.5_f64.sin() * 0.8, 0.5_f64.cos());
     fn lobe<T: Real>(w: V3<T>, p: V3<T>, s: T) -> T {
         let d = w - p;
         (-(d.length_squared()) / (T::TWO * s)).exp()
     }
     let cfg = Config::default();
-    let e64 = integrate::hemisphere(|w| lobe(w.into(), p.into(), s), &[p], &cfg);
-    let (p32, s32) = (p.as_vec3(), s as f32);
-    let e32 = integrate::hemisphere_f32(|w| lobe(w.into(), p32.into(), s32), &[p32], &cfg);
+    let e64 = integrate::hemisphere(|w| lobe(w, p, s), &[p], &cfg);
+    let (p32, s32) = (p.map(|x| x as f32), s as f32);
+    let e32 = integrate::hemisphere_f32(|w| lobe(w, p32, s32), &[p32], &cfg);
     let exact = 2.0 * PI * s;
     // The f32 lobe is centred on p rounded to f32 and its argument carries the directions'
     // f32 rounding (3e-8 absolute against a 1e-3 width): agreement to 1e-4 relative.
@@ -111,15 +109,15 @@ fn f32_hemisphere_passes_its_peaks_to_the_partition() {
     }
     // More than MAX_PEAKS peaks are accepted; the first ones shape the partition.
     let many = [p32; integrate::MAX_PEAKS + 3];
-    let e = integrate::hemisphere_f32(|w| lobe(w.into(), p32.into(), s32), &many, &cfg);
+    let e = integrate::hemisphere_f32(|w| lobe(w, p32, s32), &many, &cfg);
     assert!((e.value - exact).abs() <= 1e-3 * exact);
 }
 
 #[test]
 fn f32_ndf_area_and_weak_furnace_match_f64() {
     for alpha in [0.05_f64, 0.3, 1.0] {
-        let e64 = integrate::ndf_projected_area(|m| ggx_d(m.into(), alpha));
-        let e32 = integrate::ndf_projected_area_f32(|m| ggx_d(m.into(), alpha as f32));
+        let e64 = integrate::ndf_projected_area(|m| ggx_d(m, alpha));
+        let e32 = integrate::ndf_projected_area_f32(|m| ggx_d(m, alpha as f32));
         let rel = report(&format!("GGX area alpha = {alpha}"), e64, e32, 1.0);
         assert!(rel <= F32_ROUNDING, "f32 NDF area off f64 by {rel:.2e}");
         assert!(
@@ -128,16 +126,13 @@ fn f32_ndf_area_and_weak_furnace_match_f64() {
             e32.value
         );
 
-        let wo = DVec3::new(1.0_f64.sin(), 0.0, 1.0_f64.cos());
-        let e64 = integrate::smith_weak_furnace(
-            wo,
-            |m| ggx_d(m.into(), alpha),
-            |o, m| ggx_g1(o.into(), m.into(), alpha),
-        );
+        let wo = V3::new(1.0_f64.sin(), 0.0, 1.0_f64.cos());
+        let e64 =
+            integrate::smith_weak_furnace(wo, |m| ggx_d(m, alpha), |o, m| ggx_g1(o, m, alpha));
         let e32 = integrate::smith_weak_furnace_f32(
-            wo.as_vec3(),
-            |m| ggx_d(m.into(), alpha as f32),
-            |o, m| ggx_g1(o.into(), m.into(), alpha as f32),
+            wo.map(|x| x as f32),
+            |m| ggx_d(m, alpha as f32),
+            |o, m| ggx_g1(o, m, alpha as f32),
         );
         let rel = report(&format!("GGX weak furnace alpha = {alpha}"), e64, e32, 1.0);
         assert!(rel <= F32_ROUNDING, "f32 weak furnace off f64 by {rel:.2e}");
@@ -154,13 +149,12 @@ fn f32_reciprocity_sees_the_same_pairs_as_f64() {
     // Symmetric in (a, b) to the last bit (a + b and a.z b.z commute exactly): both orders
     // of a pair see the same two f32 vectors, so exactly 0.
     let sym = integrate::reciprocity_f32(|a, b| {
-        let (a, b): (V3<f32>, V3<f32>) = (a.into(), b.into());
         ggx_d((a + b).normalize_or(V3::unit_z()), 0.3) * (a.z * b.z)
     });
     assert_eq!(sym.max_rel, 0.0);
     // The asymmetric lobe: the same worst pair and the same ratio up to f32 rounding.
-    let r64 = integrate::reciprocity(|a, b| tilted(a.into(), b.into()));
-    let r32 = integrate::reciprocity_f32(|a, b| tilted(a.into(), b.into()));
+    let r64 = integrate::reciprocity(tilted);
+    let r32 = integrate::reciprocity_f32(tilted);
     println!(
         "reciprocity of the tilted lobe: f64 {:.9}  f32 {:.9}  ({} pairs each)",
         r64.max_rel, r32.max_rel, r32.pairs

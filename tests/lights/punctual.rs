@@ -11,7 +11,6 @@ use brdf::integrate::{Config, hemisphere};
 use brdf::lights::{self, Attenuation, SpotCone};
 use brdf::wide::{f32x8, f64x4};
 use brdf::{Real, V3};
-use glam::DVec3;
 use proptest::prelude::*;
 
 #[test]
@@ -55,9 +54,9 @@ fn real_time_and_radiometric_conventions_agree_when_c_light_is_e_over_pi() {
 /// from afar is le pi r^2, so the inverse square and cosine laws predict
 /// le pi r^2 / d^2 * c.z, exactly for a sphere whose cone clears the horizon (the cone's
 /// projected solid angle is pi sin^2(half-angle) c.z).
-fn sphere_irradiance(r: f64, d: f64, c: DVec3, le: f64) -> (f64, f64) {
+fn sphere_irradiance(r: f64, d: f64, c: V3<f64>, le: f64) -> (f64, f64) {
     let cos_half = (1.0 - (r / d) * (r / d)).sqrt();
-    let frame = Frame::from_normal(V3::from(c));
+    let frame = Frame::from_normal(c);
     let cfg = Config {
         abs_tol: 1e-13,
         rel_tol: 1e-10,
@@ -66,13 +65,13 @@ fn sphere_irradiance(r: f64, d: f64, c: DVec3, le: f64) -> (f64, f64) {
     let e = hemisphere(
         |w| {
             if w.z >= cos_half {
-                let world = DVec3::from(frame.to_world(V3::from(w)));
+                let world = frame.to_world(w);
                 le * world.z.max(0.0)
             } else {
                 0.0
             }
         },
-        &[DVec3::new(r / d, 0.0, cos_half)],
+        &[V3::new(r / d, 0.0, cos_half)],
         &cfg,
     );
     (e.value, e.error)
@@ -86,7 +85,7 @@ fn inverse_square_and_cosine_laws_match_a_small_spherical_emitter() {
     let mut worst: f64 = 0.0;
     for (d, theta_deg) in [(1.0, 0.0), (1.0, 45.0), (2.0, 70.0), (0.5, 30.0)] {
         let t: f64 = f64::to_radians(theta_deg);
-        let c = DVec3::new(t.sin(), 0.0, t.cos());
+        let c = V3::new(t.sin(), 0.0, t.cos());
         let (e_num, err) = sphere_irradiance(r, d, c, le);
         let e_perp = intensity * lights::inverse_square(d, 1e-3);
         let e = lights::irradiance(e_perp, c.z);

@@ -13,20 +13,19 @@
 use brdf::V3;
 use brdf::integrate::directional_albedo;
 use brdf::material::{DiffuseCoupling, MetallicRoughness};
-use glam::DVec3;
 
 const ROUGHNESS: [f64; 6] = [0.0, 0.05, 0.25, 0.5, 0.75, 1.0];
 const THETAS_DEG: [f64; 7] = [0.0, 30.0, 60.0, 75.0, 85.0, 88.0, 89.0];
 
-fn wo_at(theta_deg: f64) -> DVec3 {
+fn wo_at(theta_deg: f64) -> V3<f64> {
     let t = theta_deg.to_radians();
-    DVec3::new(t.sin(), 0.0, t.cos())
+    V3::new(t.sin(), 0.0, t.cos())
 }
 
 /// Directional albedo of channel `c` (0 = red) and the integrator's error estimate.
 fn albedo(m: &MetallicRoughness<f64>, theta_deg: f64, c: usize) -> (f64, f64) {
     let e = directional_albedo(wo_at(theta_deg), |o, i| {
-        let f = m.eval(V3::from(o), V3::from(i));
+        let f = m.eval(o, i);
         [f.x, f.y, f.z][c]
     });
     (e.value, e.error)

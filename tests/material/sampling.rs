@@ -13,13 +13,13 @@ use glam::DVec3;
 use crate::common;
 use common::{Rng, assert_fits, chi_square};
 
-fn wo_at(theta_deg: f64) -> DVec3 {
+fn wo_at(theta_deg: f64) -> V3<f64> {
     let t = theta_deg.to_radians();
-    DVec3::new(t.sin() * 0.6, t.sin() * 0.8, t.cos())
+    V3::new(t.sin() * 0.6, t.sin() * 0.8, t.cos())
 }
 
-fn flip(w: DVec3) -> DVec3 {
-    DVec3::new(w.x, w.y, -w.z)
+fn flip(w: V3<f64>) -> V3<f64> {
+    V3::new(w.x, w.y, -w.z)
 }
 
 fn material(roughness: f64, metallic: f64) -> MetallicRoughness<f64> {
@@ -42,26 +42,25 @@ const CASES: [(f64, f64, f64); 6] = [
 fn sampler_matches_its_pdf() {
     for (roughness, metallic, theta) in CASES {
         let m = material(roughness, metallic);
-        let wo = V3::from(wo_at(theta));
-        let pdf = |w: DVec3| m.pdf(wo, V3::from(w));
+        let wo = wo_at(theta);
+        let pdf = |w: V3<f64>| m.pdf(wo, w);
         // chi_square bins the upper hemisphere; a specular sample reflected below the horizon
         // is folded up, and judged against the folded pdf (upper + mirrored lower density).
-        let folded = |w: DVec3| pdf(w) + pdf(flip(w));
+        let folded = |w: V3<f64>| pdf(w) + pdf(flip(w));
         let mut below = 0usize;
         let stat = chi_square(
             |u1, u2| {
                 let (wi, p) = m.sample(wo, u1, u2);
                 assert_eq!(p, m.pdf(wo, wi), "returned pdf is pdf(wo, wi)");
-                let w = DVec3::from(wi);
-                let w = if w.z < 0.0 {
+                let w = if wi.z < 0.0 {
                     below += 1;
-                    flip(w)
+                    flip(wi)
                 } else {
-                    w
+                    wi
                 };
-                (w, folded(w))
+                (w.into(), folded(w))
             },
-            folded,
+            |w| folded(w.into()),
         );
         println!(
             "roughness {roughness}, metallic {metallic}, theta_o {theta}: P(spec) = {:.3}, {:.2}% of samples below the horizon",
@@ -80,10 +79,10 @@ fn a_sampler_paired_with_a_wrong_pdf_is_rejected() {
     // The test has teeth: the samples judged against the same mixture with the lobe
     // probability swapped fail by a wide margin.
     let m = material(0.6, 0.0);
-    let wo = V3::from(wo_at(40.0));
+    let wo = wo_at(40.0);
     let p = m.specular_probability(wo);
-    let wrong = |w: DVec3| {
-        let right = m.pdf(wo, V3::from(w));
+    let wrong = |w: V3<f64>| {
+        let right = m.pdf(wo, w);
         let diff = w.z.max(0.0) / core::f64::consts::PI;
         let spec = (right - (1.0 - p) * diff) / p;
         p * diff + (1.0 - p) * spec
@@ -91,11 +90,13 @@ fn a_sampler_paired_with_a_wrong_pdf_is_rejected() {
     let (stat, dof) = chi_square(
         |u1, u2| {
             let (wi, _) = m.sample(wo, u1, u2);
-            let w = DVec3::from(wi);
-            let w = if w.z < 0.0 { flip(w) } else { w };
-            (w, wrong(w) + wrong(flip(w)))
+            let w = if wi.z < 0.0 { flip(wi) } else { wi };
+            (w.into(), wrong(w) + wrong(flip(w)))
         },
-        |w| wrong(w) + wrong(flip(w)),
+        |w| {
+            let w = V3::from(w);
+            wrong(w) + wrong(flip(w))
+        },
     );
     println!("swapped lobe probability ({p:.3}): chi^2 = {stat:.0}, dof = {dof}");
     assert!(stat > 10.0 * dof as f64, "chi^2 {stat} (dof {dof})");
@@ -109,10 +110,9 @@ fn pdf_integrates_to_one_over_the_sphere() {
         .chain([(0.05, 0.0, 80.0), (0.25, 0.5, 89.0)])
     {
         let m = material(roughness, metallic);
-        let wo_d = wo_at(theta);
-        let wo = V3::from(wo_d);
-        let mirror = DVec3::new(-wo_d.x, -wo_d.y, wo_d.z);
-        let pdf = |w: DVec3| m.pdf(wo, V3::from(w));
+        let wo = wo_at(theta);
+        let mirror = V3::new(-wo.x, -wo.y, wo.z);
+        let pdf = |w: V3<f64>| m.pdf(wo, w);
         let upper = hemisphere(pdf, &[mirror], &cfg);
         // The lower hemisphere through the mirror map w -> (x, y, -z); its peak is the mirror
         // direction's image.
@@ -149,8 +149,7 @@ fn mean_weight_equals_the_directional_albedo() {
     for (roughness, metallic, theta) in CASES {
         for coupling in [DiffuseCoupling::Gltf, DiffuseCoupling::Additive] {
             let m = material(roughness, metallic).with_coupling(coupling);
-            let wo_d = wo_at(theta);
-            let wo = V3::from(wo_d);
+            let wo = wo_at(theta);
             let mut rng = Rng(0x3e16);
             let n = 100_000;
             let (mut sum, mut sum2) = ([0.0; 3], [0.0; 3]);
@@ -165,8 +164,8 @@ fn mean_weight_equals_the_directional_albedo() {
             for k in 0..3 {
                 let mean = sum[k] / n as f64;
                 let sigma = ((sum2[k] / n as f64 - mean * mean).max(0.0) / n as f64).sqrt();
-                let rho = directional_albedo(wo_d, |o, i| {
-                    let f = m.eval(V3::from(o), V3::from(i));
+                let rho = directional_albedo(wo, |o, i| {
+                    let f = m.eval(o, i);
                     [f.x, f.y, f.z][k]
                 });
                 if k == 0 {

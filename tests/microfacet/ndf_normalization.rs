@@ -29,7 +29,7 @@ const ALPHAS: [(f64, f64); 12] = [
 ];
 
 fn check(name: &str, m: &impl Microfacet<f64>, ax: f64, ay: f64) {
-    let e = ndf_projected_area(|h| m.d(V3::from(h)));
+    let e = ndf_projected_area(|h| m.d(h));
     println!(
         "{name} {ax}x{ay}: {:.9} (+- {:.1e}, {} evals)",
         e.value, e.error, e.evaluations

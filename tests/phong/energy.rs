@@ -9,10 +9,12 @@
 //!   and the Blinn-Phong NDF has projected area 1.
 #![cfg(all(feature = "phong", feature = "integrate"))]
 
+use brdf::V3;
 use brdf::integrate::{Estimate, directional_albedo, ndf_projected_area};
 use brdf::phong;
 use core::f64::consts::PI;
-use glam::DVec3;
+
+use crate::common::{dot, normalize};
 
 const EXPONENTS: [f64; 12] = [
     0.0, 0.5, 1.0, 2.0, 5.0, 10.0, 30.0, 100.0, 300.0, 1000.0, 3000.0, 10000.0,
@@ -26,21 +28,21 @@ const THETAS_DEG: [f64; 8] = [0.0, 15.0, 30.0, 45.0, 60.0, 75.0, 85.0, 89.0];
 /// (n + 8) / (8 pi) factor, is 2e-4 at n = 10^4).
 const REL_TOL: f64 = 1e-4;
 
-fn wo(theta_deg: f64) -> DVec3 {
+fn wo(theta_deg: f64) -> V3<f64> {
     let t = theta_deg.to_radians();
-    DVec3::new(t.sin(), 0.0, t.cos())
+    V3::new(t.sin(), 0.0, t.cos())
 }
 
 /// r.l from local vectors, the mirror of wo about +z dotted with wi.
-fn r_dot_l(wo: DVec3, wi: DVec3) -> f64 {
-    DVec3::new(-wo.x, -wo.y, wo.z).dot(wi)
+fn r_dot_l(wo: V3<f64>, wi: V3<f64>) -> f64 {
+    dot(V3::new(-wo.x, -wo.y, wo.z), wi)
 }
 
-fn n_dot_h(wo: DVec3, wi: DVec3) -> f64 {
-    (wo + wi).normalize().z
+fn n_dot_h(wo: V3<f64>, wi: V3<f64>) -> f64 {
+    normalize(wo + wi).z
 }
 
-fn albedo(theta_deg: f64, f: impl Fn(DVec3, DVec3) -> f64) -> Estimate {
+fn albedo(theta_deg: f64, f: impl Fn(V3<f64>, V3<f64>) -> f64) -> Estimate {
     let e = directional_albedo(wo(theta_deg), f);
     assert!(e.value.is_finite() && e.error.is_finite(), "{e:?}");
     e
@@ -52,7 +54,7 @@ fn albedo(theta_deg: f64, f: impl Fn(DVec3, DVec3) -> f64) -> Estimate {
 fn table(
     name: &str,
     allowance: impl Fn(f64) -> f64,
-    f: impl Fn(f64, DVec3, DVec3) -> f64,
+    f: impl Fn(f64, V3<f64>, V3<f64>) -> f64,
 ) -> (f64, f64, f64) {
     use core::fmt::Write;
     let mut out = String::new();
@@ -119,7 +121,7 @@ fn classic_phong_albedo_exceeds_one() {
 }
 
 /// Every energy-conserving model of the family stays <= 1 over the grid.
-fn assert_bounded(name: &str, f: impl Fn(f64, DVec3, DVec3) -> f64) {
+fn assert_bounded(name: &str, f: impl Fn(f64, V3<f64>, V3<f64>) -> f64) {
     let (worst, n, t) = table(name, |_| 1.0, f);
     assert!(
         worst <= 1.0,

@@ -17,15 +17,15 @@ use brdf::{Real, V3};
 use glam::DVec3;
 
 use crate::common;
-use common::{Rng, assert_fits, chi_square};
+use common::{Rng, assert_fits, chi_square, dot, normalize};
 
 fn v(w: DVec3) -> V3<f64> {
     V3::from(w)
 }
 
-fn wo_at(theta_deg: f64) -> DVec3 {
+fn wo_at(theta_deg: f64) -> V3<f64> {
     let t = theta_deg.to_radians();
-    DVec3::new(t.sin() * 0.6, t.sin() * 0.8, t.cos())
+    V3::new(t.sin() * 0.6, t.sin() * 0.8, t.cos())
 }
 
 #[test]
@@ -80,20 +80,20 @@ fn ggx_visible_normal_samplers_match_their_pdf() {
             &format!("ggx vndf Heitz 2018, alpha {ax}x{ay}, {theta} deg"),
             chi_square(
                 |x, y| {
-                    let (m, p) = sampling::ggx_vndf(&g, v(wo), x, y);
+                    let (m, p) = sampling::ggx_vndf(&g, wo, x, y);
                     (m.into(), p)
                 },
-                |m| sampling::visible_normal_pdf(&g, v(wo), v(m)),
+                |m| sampling::visible_normal_pdf(&g, wo, v(m)),
             ),
         );
         assert_fits(
             &format!("ggx vndf spherical cap, alpha {ax}x{ay}, {theta} deg"),
             chi_square(
                 |x, y| {
-                    let (m, p) = sampling::ggx_vndf_spherical_cap(&g, v(wo), x, y);
+                    let (m, p) = sampling::ggx_vndf_spherical_cap(&g, wo, x, y);
                     (m.into(), p)
                 },
-                |m| sampling::visible_normal_pdf(&g, v(wo), v(m)),
+                |m| sampling::visible_normal_pdf(&g, wo, v(m)),
             ),
         );
     }
@@ -113,10 +113,10 @@ fn beckmann_visible_normal_sampler_matches_its_pdf() {
             &format!("beckmann vndf, alpha {ax}x{ay}, {theta} deg"),
             chi_square(
                 |x, y| {
-                    let (m, p) = sampling::beckmann_vndf(&b, v(wo), x, y);
+                    let (m, p) = sampling::beckmann_vndf(&b, wo, x, y);
                     (m.into(), p)
                 },
-                |m| sampling::visible_normal_pdf(&b, v(wo), v(m)),
+                |m| sampling::visible_normal_pdf(&b, wo, v(m)),
             ),
         );
     }
@@ -147,24 +147,18 @@ fn pdfs_integrate_to_one() {
     let g = Ggx::new(0.2, 0.5).unwrap();
     let b = Beckmann::isotropic(0.3).unwrap();
     let wo = wo_at(70.0);
-    type Pdf<'a> = Box<dyn Fn(DVec3) -> f64 + 'a>;
+    type Pdf<'a> = Box<dyn Fn(V3<f64>) -> f64 + 'a>;
     let cases: [(&str, Pdf); 5] = [
-        (
-            "cosine",
-            Box::new(|w| sampling::cosine_hemisphere_pdf(v(w))),
-        ),
-        ("ggx D cos", Box::new(|m| sampling::d_cos_pdf(&g, v(m)))),
-        (
-            "beckmann D cos",
-            Box::new(|m| sampling::d_cos_pdf(&b, v(m))),
-        ),
+        ("cosine", Box::new(sampling::cosine_hemisphere_pdf::<f64>)),
+        ("ggx D cos", Box::new(|m| sampling::d_cos_pdf(&g, m))),
+        ("beckmann D cos", Box::new(|m| sampling::d_cos_pdf(&b, m))),
         (
             "ggx visible",
-            Box::new(|m| sampling::visible_normal_pdf(&g, v(wo), v(m))),
+            Box::new(|m| sampling::visible_normal_pdf(&g, wo, m)),
         ),
         (
             "beckmann visible",
-            Box::new(|m| sampling::visible_normal_pdf(&b, v(wo), v(m))),
+            Box::new(|m| sampling::visible_normal_pdf(&b, wo, m)),
         ),
     ];
     for (name, pdf) in cases {
@@ -173,16 +167,16 @@ fn pdfs_integrate_to_one() {
     }
     // The reflected-direction pdf integrates to 1 over the whole sphere (directions reflected
     // below the horizon included): upper half plus the mirrored lower half.
-    let refl = |wi: DVec3| {
-        let h = (wo + wi).normalize();
+    let refl = |wi: V3<f64>| {
+        let h = normalize(wo + wi);
         let h = if h.z < 0.0 { -h } else { h };
-        sampling::reflect_pdf(sampling::visible_normal_pdf(&g, v(wo), v(h)), wo.dot(h))
+        sampling::reflect_pdf(sampling::visible_normal_pdf(&g, wo, h), dot(wo, h))
     };
-    let r = wo - 2.0 * wo.z * DVec3::Z; // mirror: the peak of the reflected lobe
-    let upper = hemisphere(refl, &[DVec3::new(-wo.x, -wo.y, wo.z)], &cfg).value;
+    let r = wo - 2.0 * wo.z * V3::unit_z(); // mirror: the peak of the reflected lobe
+    let upper = hemisphere(refl, &[V3::new(-wo.x, -wo.y, wo.z)], &cfg).value;
     let lower = hemisphere(
-        |w| refl(DVec3::new(w.x, w.y, -w.z)),
-        &[DVec3::new(r.x, r.y, -r.z)],
+        |w| refl(V3::new(w.x, w.y, -w.z)),
+        &[V3::new(r.x, r.y, -r.z)],
         &cfg,
     )
     .value;

@@ -25,25 +25,21 @@ use brdf::microfacet::Microfacet;
 use brdf::sampling as sm;
 use brdf::{Real, V3};
 use common::{Rng, assert_fits, chi_square};
-use glam::DVec3;
 
-fn dir(theta_deg: f64, phi_deg: f64) -> DVec3 {
+fn dir(theta_deg: f64, phi_deg: f64) -> V3<f64> {
     let (t, p) = (theta_deg.to_radians(), phi_deg.to_radians());
-    DVec3::new(t.sin() * p.cos(), t.sin() * p.sin(), t.cos())
+    V3::new(t.sin() * p.cos(), t.sin() * p.sin(), t.cos())
 }
 
 /// One model's sampler and pdf function on f64 with a scalar Fresnel closure.
-type Sampler = Box<dyn Fn(DVec3, f64, f64, &dyn Fn(f64) -> f64) -> (DVec3, f64, f64)>;
-type Pdf = Box<dyn Fn(DVec3, DVec3) -> f64>;
+type Sampler = Box<dyn Fn(V3<f64>, f64, f64, &dyn Fn(f64) -> f64) -> (V3<f64>, f64, f64)>;
+type Pdf = Box<dyn Fn(V3<f64>, V3<f64>) -> f64>;
 
 fn ggx_model(alpha: f64) -> (Sampler, Pdf, Box<dyn Microfacet<f64>>) {
     let g = Ggx::isotropic(alpha).unwrap();
     (
-        Box::new(move |wo, u1, u2, f| {
-            let (wi, p, w) = sm::ggx_reflection(&g, V3::from(wo), u1, u2, f);
-            (DVec3::from(wi), p, w)
-        }),
-        Box::new(move |wo, wi| sm::ggx_reflection_pdf(&g, V3::from(wo), V3::from(wi))),
+        Box::new(move |wo, u1, u2, f| sm::ggx_reflection(&g, wo, u1, u2, f)),
+        Box::new(move |wo, wi| sm::ggx_reflection_pdf(&g, wo, wi)),
         Box::new(g),
     )
 }
@@ -51,11 +47,8 @@ fn ggx_model(alpha: f64) -> (Sampler, Pdf, Box<dyn Microfacet<f64>>) {
 fn beckmann_model(alpha: f64) -> (Sampler, Pdf, Box<dyn Microfacet<f64>>) {
     let b = Beckmann::isotropic(alpha).unwrap();
     (
-        Box::new(move |wo, u1, u2, f| {
-            let (wi, p, w) = sm::beckmann_reflection(&b, V3::from(wo), u1, u2, f);
-            (DVec3::from(wi), p, w)
-        }),
-        Box::new(move |wo, wi| sm::beckmann_reflection_pdf(&b, V3::from(wo), V3::from(wi))),
+        Box::new(move |wo, u1, u2, f| sm::beckmann_reflection(&b, wo, u1, u2, f)),
+        Box::new(move |wo, wi| sm::beckmann_reflection_pdf(&b, wo, wi)),
         Box::new(b),
     )
 }
@@ -77,14 +70,14 @@ fn reflection_samples_follow_the_pdf_function() {
             {
                 let (sample, pdf, _) = model(alpha);
                 let wo = dir(theta, 30.0);
-                let fold = |w: DVec3| DVec3::new(w.x, w.y, w.z.abs());
-                let folded = |w: DVec3| pdf(wo, w) + pdf(wo, DVec3::new(w.x, w.y, -w.z));
+                let fold = |w: V3<f64>| V3::new(w.x, w.y, w.z.abs());
+                let folded = |w: V3<f64>| pdf(wo, w) + pdf(wo, V3::new(w.x, w.y, -w.z));
                 let fit = chi_square(
                     |u1, u2| {
                         let (wi, _, _) = sample(wo, u1, u2, &|_| 1.0);
-                        (fold(wi), folded(fold(wi)))
+                        (fold(wi).into(), folded(fold(wi)))
                     },
-                    folded,
+                    |w| folded(w.into()),
                 );
                 assert_fits(&format!("{name} alpha {alpha} theta_o {theta}"), fit);
             }
@@ -108,13 +101,13 @@ fn reflection_pdf_integrates_to_one_over_the_sphere() {
                 let wo = dir(theta, 0.0);
                 let cfg = brdf::integrate::Config::default();
                 // The lobe's peak, the mirror direction, as a hint to the integrator.
-                let mirror = DVec3::new(-wo.x, -wo.y, wo.z);
+                let mirror = V3::new(-wo.x, -wo.y, wo.z);
                 let up = brdf::integrate::hemisphere(|w| pdf(wo, w), &[mirror], &cfg);
                 // Below: the lobe's continuation past the horizon and wi = -wo (where the
                 // half vector leaves the hemisphere of visible normals), mirrored up.
                 let down = brdf::integrate::hemisphere(
-                    |w| pdf(wo, DVec3::new(w.x, w.y, -w.z)),
-                    &[DVec3::new(-wo.x, -wo.y, wo.z), mirror],
+                    |w| pdf(wo, V3::new(w.x, w.y, -w.z)),
+                    &[V3::new(-wo.x, -wo.y, wo.z), mirror],
                     &cfg,
                 );
                 let total = up.value + down.value;
@@ -232,7 +225,7 @@ fn mean_weight_is_the_directional_albedo() {
                 let mean = s / N as f64;
                 let sigma = ((s2 / N as f64 - mean * mean).max(0.0) / N as f64).sqrt();
                 let e = directional_albedo(wo, |o, i| {
-                    cook_torrance::eval(dist.as_ref(), V3::from(o), V3::from(i), |_| 1.0)
+                    cook_torrance::eval(dist.as_ref(), o, i, |_| 1.0)
                 });
                 let diff = mean - e.value;
                 println!(

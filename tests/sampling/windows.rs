@@ -265,11 +265,14 @@ fn measure(case: &Case) -> Measured {
         },
         &case.pdf,
     );
+    // The integrator's directions are `V3`s; the test space is glam's, like the chi-square's.
+    let pdf = |w: V3<f64>| (case.pdf)(w.into());
+    let peaks: Vec<V3<f64>> = case.peaks.iter().map(|&p| p.into()).collect();
     let cfg = Config::default();
-    let total = hemisphere(&case.pdf, &case.peaks, &cfg);
+    let total = hemisphere(pdf, &peaks, &cfg);
     let (mean, se) = moments(&case.draw);
     let moments = core::array::from_fn(|k| {
-        let e = hemisphere(|w| w[k] * (case.pdf)(w), &case.peaks, &cfg);
+        let e = hemisphere(|w| w.to_array()[k] * pdf(w), &peaks, &cfg);
         (mean[k], se[k], e.value, e.error)
     });
     Measured {

@@ -30,6 +30,6 @@ pub extern "C" fn main(_argc: i32, _argv: *const *const u8) -> i32 {
     let n = V3::new(0.0_f32, 0.6, 0.8);
     let f = Frame::from_normal(n);
     let z = f.to_local(n).z.exp().ln();
-    let albedo = brdf::integrate::directional_albedo(glam::DVec3::Z, |_, _| core::f64::consts::FRAC_1_PI);
+    let albedo = brdf::integrate::directional_albedo(V3::unit_z(), |_, _| core::f64::consts::FRAC_1_PI);
     if (z - 1.0).abs() < 1e-5 && (albedo.value - 1.0).abs() < 1e-6 { 0 } else { 1 }
 }

@@ -12,7 +12,6 @@ use brdf::ggx::Ggx;
 use brdf::ibl::{dfg, energy, irradiance};
 use brdf::integrate::directional_albedo;
 use brdf::microfacet::ALPHA_MIN;
-use glam::DVec3;
 
 /// The DFG table (A, B, E), the fits against it, and the mip mappings.
 pub fn dfg_section() {
@@ -203,7 +202,7 @@ pub fn energy_section() {
     outln!("\n|---|{}", "---|".repeat(thetas.len()));
     let wo = |deg: f64| {
         let t = f64::to_radians(deg);
-        DVec3::new(t.sin(), 0.0, t.cos())
+        V3::new(t.sin(), 0.0, t.cos())
     };
     for alpha in [0.1, 0.25, 0.5, 0.75, 1.0] {
         let Ok(g) = Ggx::isotropic(alpha) else {
@@ -211,8 +210,7 @@ pub fn energy_section() {
         };
         out!("| {alpha} |");
         for t in thetas {
-            let ss =
-                |o: DVec3, i: DVec3| cook_torrance::eval(&g, V3::from(o), V3::from(i), |_| 1.0);
+            let ss = |o: V3<f64>, i: V3<f64>| cook_torrance::eval(&g, o, i, |_| 1.0);
             let before = directional_albedo(wo(t), ss).value;
             let after = directional_albedo(wo(t), |o, i| {
                 ss(o, i) + energy::kulla_conty_ggx(o.z, i.z, alpha, 1.0)
@@ -242,9 +240,9 @@ pub fn energy_section() {
                 cook_torrance::eval(&g, o, i, |vh| brdf::fresnel::schlick(f0, vh))
             };
             let f_avg = energy::fresnel_avg_schlick(f0, 1.0);
-            before[c] = directional_albedo(wo(0.0), |o, i| schlick(V3::from(o), V3::from(i))).value;
+            before[c] = directional_albedo(wo(0.0), schlick).value;
             after[c] = directional_albedo(wo(0.0), |o, i| {
-                schlick(V3::from(o), V3::from(i)) + energy::kulla_conty_ggx(o.z, i.z, alpha, f_avg)
+                schlick(o, i) + energy::kulla_conty_ggx(o.z, i.z, alpha, f_avg)
             })
             .value;
         }

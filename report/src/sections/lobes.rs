@@ -10,13 +10,12 @@ use brdf::lights;
 use brdf::material::MetallicRoughness;
 use brdf::phong::{self, ClassicPhong, ModifiedPhong, NormalizedBlinnPhong, NormalizedPhong};
 use brdf::{ParamError, V3};
-use glam::DVec3;
 
 const THETAS: [f64; 7] = [0.0, 30.0, 60.0, 75.0, 85.0, 89.0, 89.9];
 
-fn wo_at(theta_deg: f64) -> DVec3 {
+fn wo_at(theta_deg: f64) -> V3<f64> {
     let t = theta_deg.to_radians();
-    DVec3::new(t.sin(), 0.0, t.cos())
+    V3::new(t.sin(), 0.0, t.cos())
 }
 
 fn header(first: &str) {
@@ -33,7 +32,7 @@ fn albedo_row(name: &str, f: impl Fn(V3<f64>, V3<f64>) -> f64) -> f64 {
     out!("| {name} |");
     let mut max: f64 = 0.0;
     for t in THETAS {
-        let a = directional_albedo(wo_at(t), |o, i| f(V3::from(o), V3::from(i))).value;
+        let a = directional_albedo(wo_at(t), &f).value;
         out!(" {a:.4} |");
         max = max.max(a);
     }
@@ -87,12 +86,12 @@ type Lobe = Box<dyn Fn(V3<f64>, V3<f64>) -> f64>;
 /// exponents and view angles.
 fn phong_row(name: &str, make: impl Fn(f64) -> Result<Lobe, ParamError>) -> Result<(), ParamError> {
     let lobe = make(16.0)?;
-    let rec = integrate::reciprocity(|a, b| lobe(V3::from(a), V3::from(b)));
+    let rec = integrate::reciprocity(&lobe);
     let (mut max, mut at) = (0.0_f64, (0.0, 0.0));
     for n in [0.5, 2.0, 8.0, 64.0, 1e3, 1e4] {
         let lobe = make(n)?;
         for t in THETAS {
-            let a = directional_albedo(wo_at(t), |o, i| lobe(V3::from(o), V3::from(i))).value;
+            let a = directional_albedo(wo_at(t), &lobe).value;
             if a > max {
                 (max, at) = (a, (n, t));
             }
