@@ -49,11 +49,16 @@
 //! `rough_conductor` (from the directions: half vector, cosines, then the term),
 //! `rough_conductor_fast` (the cosines of the half vector by `cook_torrance::half_cosines`,
 //! then the fast term), `rough_conductor_fast_borrowed` (the same kernel as a closure that
-//! borrows its parameters instead of moving them: see the `batch` module docs) and the
-//! copy floor on `f32x8` with `std::time::Instant`, after one untimed run of each,
+//! borrows its parameters instead of moving them: see the `batch` module docs),
+//! `material_gltf` and `material_gltf_fast` (`material::gltf` and `gltf_fast` from the
+//! directions through `half_cosines`, base colour (0.9, 0.6, 0.3), metallic 0.5, roughness 0.5,
+//! three output slices), `material_textbook_scalar` (the same BRDF as a shader author
+//! transcribes Filament's `surface_brdf.fs` into scalar `f32`, one element at a time: a
+//! yardstick, not a crate kernel) and the copy floor on `f32x8` with `std::time::Instant`, after one untimed run of each,
 //! `BRDF_THROUGHPUT_RUNS` times (default 7), and prints one line per run:
 //! `time <kernel> <milliseconds>`. With `BRDF_THROUGHPUT_OUTPUT=<dir>` it also writes each
-//! kernel's outputs there as raw `f32` (`<kernel>.f32`), for the script to compare values.
+//! kernel's outputs there as raw `f32` (`<kernel>.f32`; the material rows' red channel), for
+//! the script to compare values.
 
 use brdf::Cosines;
 use brdf::microfacet::Alpha;
@@ -398,6 +403,54 @@ fn ggx_d_plain<T: Real>(c: T, alpha: T) -> T {
     T::select(c.simd_gt(T::ZERO), a2 / (T::PI * t * t), T::ZERO)
 }
 
+/// The material rows' parameters: base colour, metallic and perceptual roughness (alpha =
+/// 0.25), as `material_gltf`'s.
+const MATERIAL_BASE: [f32; 3] = [0.9, 0.6, 0.3];
+const MATERIAL_METALLIC: f32 = 0.5;
+const MATERIAL_ROUGHNESS: f32 = 0.5;
+
+/// The glTF 2.0 metallic-roughness BRDF (Appendix B's composition, the same function as
+/// `material::gltf`) written as a shader author transcribes Filament's `surface_brdf.fs` into
+/// scalar `f32`: `D_GGX` with 1 - (n.h)^2 formed as written (it cancels near n.h = 1),
+/// `V_SmithGGXCorrelated`, `F_Schlick` with pow5 by multiplications, `Fd_Lambert`, from the
+/// view and light directions (normal +z). Not a crate kernel: the textbook row of the timing
+/// mode, against which the crate's lanes are measured.
+#[inline(never)]
+fn material_textbook(v: [f32; 3], l: [f32; 3]) -> [f32; 3] {
+    let s = [v[0] + l[0], v[1] + l[1], v[2] + l[2]];
+    let inv = 1.0 / (s[0] * s[0] + s[1] * s[1] + s[2] * s[2]).sqrt();
+    let h = [s[0] * inv, s[1] * inv, s[2] * inv];
+    let no_v = v[2];
+    let no_l = l[2];
+    if no_v <= 0.0 || no_l <= 0.0 {
+        return [0.0; 3];
+    }
+    let no_h = h[2].clamp(0.0, 1.0);
+    let vo_h = (v[0] * h[0] + v[1] * h[1] + v[2] * h[2]).clamp(0.0, 1.0);
+    let roughness = MATERIAL_ROUGHNESS * MATERIAL_ROUGHNESS;
+    // D_GGX
+    let one_minus_no_h2 = 1.0 - no_h * no_h;
+    let a = no_h * roughness;
+    let k = roughness / (one_minus_no_h2 + a * a);
+    let d = k * k * (1.0 / core::f32::consts::PI);
+    // V_SmithGGXCorrelated
+    let a2 = roughness * roughness;
+    let ggxv = no_l * (no_v * no_v * (1.0 - a2) + a2).sqrt();
+    let ggxl = no_v * (no_l * no_l * (1.0 - a2) + a2).sqrt();
+    let vis = 0.5 / (ggxv + ggxl);
+    // F_Schlick(f0, 1, v.h), pow5 by multiplications
+    let x = 1.0 - vo_h;
+    let x2 = x * x;
+    let w = x2 * x2 * x;
+    let f_dielectric = 0.04 + (1.0 - 0.04) * w;
+    let kd = (1.0 - MATERIAL_METALLIC) * (1.0 - f_dielectric);
+    MATERIAL_BASE.map(|b| {
+        let f0 = 0.04 * (1.0 - MATERIAL_METALLIC) + b * MATERIAL_METALLIC;
+        let f = f0 + (1.0 - f0) * w;
+        kd * b * (1.0 / core::f32::consts::PI) + f * d * vis
+    })
+}
+
 /// The timing mode for `bench/mitsuba/compare.py` (module docs).
 fn timing_mode(path: &str) -> Result<(), String> {
     let bytes = std::fs::read(path).map_err(|e| format!("{path}: {e}"))?;
@@ -428,6 +481,20 @@ fn timing_mode(path: &str) -> Result<(), String> {
     let alpha = f32x8::splat(ALPHA as f32);
     let (eta, k) = (f32x8::splat(ETA as f32), f32x8::splat(K as f32));
     type Pass<'a> = Box<dyn FnMut(&mut [f32]) + 'a>;
+    // The material rows' green and blue outputs, one pair per row.
+    let (mut g1, mut b1, mut g2, mut b2, mut g3, mut b3) = (
+        vec![0.0f32; n],
+        vec![0.0f32; n],
+        vec![0.0f32; n],
+        vec![0.0f32; n],
+        vec![0.0f32; n],
+        vec![0.0f32; n],
+    );
+    let base8 = V3::new(
+        f32x8::splat(MATERIAL_BASE[0]),
+        f32x8::splat(MATERIAL_BASE[1]),
+        f32x8::splat(MATERIAL_BASE[2]),
+    );
     let mut kernels: Vec<(&str, Pass)> = vec![
         ("copy", Box::new(|o: &mut [f32]| o.copy_from_slice(a[2]))),
         (
@@ -506,6 +573,70 @@ fn timing_mode(path: &str) -> Result<(), String> {
                     let f = fresnel::conductor_fast(vh, *eta, *k);
                     [fast_term(nh, vz, lz, *alpha, f) * lz.saturate()]
                 });
+            }),
+        ),
+        (
+            // The glTF material, exact tier, red channel kept (the outputs of the three
+            // material rows are compared channel 0 against channel 0).
+            "material_gltf",
+            Box::new(move |o: &mut [f32]| {
+                let _ = batch::run_f32(
+                    a,
+                    [o, &mut g1[..], &mut b1[..]],
+                    move |[vx, vy, vz, lx, ly, lz]| {
+                        let (v, l) = (V3::new(vx, vy, vz), V3::new(lx, ly, lz));
+                        let (nh, vh) = cook_torrance::half_cosines(v, l);
+                        let f = material::gltf(
+                            Cosines {
+                                n_dot_v: vz,
+                                n_dot_l: lz,
+                                n_dot_h: nh,
+                                v_dot_h: vh,
+                            },
+                            base8,
+                            f32x8::splat(MATERIAL_METALLIC),
+                            f32x8::splat(MATERIAL_ROUGHNESS),
+                        );
+                        [f.x, f.y, f.z]
+                    },
+                );
+            }),
+        ),
+        (
+            "material_gltf_fast",
+            Box::new(move |o: &mut [f32]| {
+                let _ = batch::run_f32(
+                    a,
+                    [o, &mut g2[..], &mut b2[..]],
+                    move |[vx, vy, vz, lx, ly, lz]| {
+                        let (v, l) = (V3::new(vx, vy, vz), V3::new(lx, ly, lz));
+                        let (nh, vh) = cook_torrance::half_cosines(v, l);
+                        let f = material::gltf_fast(
+                            Cosines {
+                                n_dot_v: vz,
+                                n_dot_l: lz,
+                                n_dot_h: nh,
+                                v_dot_h: vh,
+                            },
+                            base8,
+                            f32x8::splat(MATERIAL_METALLIC),
+                            f32x8::splat(MATERIAL_ROUGHNESS),
+                        );
+                        [f.x, f.y, f.z]
+                    },
+                );
+            }),
+        ),
+        (
+            "material_textbook_scalar",
+            Box::new(move |o: &mut [f32]| {
+                for i in 0..o.len() {
+                    let f =
+                        material_textbook([a[0][i], a[1][i], a[2][i]], [a[3][i], a[4][i], a[5][i]]);
+                    o[i] = f[0];
+                    g3[i] = f[1];
+                    b3[i] = f[2];
+                }
             }),
         ),
     ];

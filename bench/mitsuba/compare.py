@@ -264,6 +264,16 @@ def main():
             print(f"# values {name}: brdf / Mitsuba median {np.median(ratio):.6f}, "
                   f"range [{ratio.min():.4g}, {ratio.max():.4g}] over {ok.sum()} elements")
         accuracy = measure_accuracy(soa, mi_values, brdf_values, args.check, args.seed)
+        material_err = {}
+        path = os.path.join(tmp, "material_gltf.f32")
+        if os.path.exists(path):
+            exact = np.fromfile(path, dtype="<f4").astype(np.float64)
+            for row in ("material_textbook_scalar", "material_gltf", "material_gltf_fast"):
+                p2 = os.path.join(tmp, f"{row}.f32")
+                if os.path.exists(p2):
+                    ulp, _, sub = ref.errors(np.fromfile(p2, dtype="<f4"), exact)
+                    ulp = ulp[~sub]
+                    material_err[row] = (float(ulp.max()), float(np.median(ulp)))
 
         mi_ms = {name: [] for name in KERNELS}
         brdf_ms = {name: [] for name in KERNELS + list(FAST) + ["ggx_d_plain", "copy"]}
@@ -298,6 +308,22 @@ def main():
             print(f"| {label} | {cell(m, mi_acc)} | {cell(b, accuracy[('brdf', row)])} "
                   f"| {b / m:.2f} | {b / copy:.2f} |")
     print(f"| copy (floor) | | {copy:.2f} ms | | 1.00 |")
+
+    if "material_textbook_scalar" in med and "material_gltf" in med:
+        t = med["material_textbook_scalar"]
+        print(f"\n| glTF material ({args.n:.0e} elements, RGB, from the directions) | time "
+              f"| ns per element | textbook scalar f32 / this | against the exact tier (red) |")
+        print("|---|---|---|---|---|")
+        for row, label in (("material_textbook_scalar",
+                            "textbook scalar f32 (Filament's surface_brdf.fs forms)"),
+                           ("material_gltf", "`material::gltf`, f32x8 (exact tier)"),
+                           ("material_gltf_fast", "`material::gltf_fast`, f32x8 (working precision)")):
+            if row not in med:
+                continue
+            b = med[row]
+            mx, md = material_err.get(row, (0.0, 0.0))
+            print(f"| {label} | {b:.2f} ms | {b * 1e6 / args.n:.2f} | {t / b:.2f} "
+                  f"| max {mx:.3g} ULP, median {md:.2g} |")
     print("\nULP: each result against the function it computes, evaluated exactly on the same "
           "f32 inputs (bench/mitsuba/reference.py): max and median over all "
           f"{args.n} elements whose exact value is 0 or a normal f32; max relative error; "

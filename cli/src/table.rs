@@ -2290,6 +2290,58 @@ pub static KERNELS: &[Kernel] = &[
         )
     ),
     kernel!(
+        "material::metallic_roughness_fast",
+        "Metallic-roughness BRDF in working precision (Filament's D_GGX), RGB, glTF 2.0 \
+         Appendix B; Guy and Agopian 2018",
+        [n_dot_v: Domain::COS, n_dot_l: Domain::COS, n_dot_h: Domain::COS, v_dot_h: Domain::COS,
+         base_color_r: Domain::UNIT, base_color_g: Domain::UNIT, base_color_b: Domain::UNIT,
+         metallic: Domain::UNIT, roughness: Domain::UNIT, dielectric_f0: Domain::UNIT,
+         coupling: COUPLING]
+            -> [f_r: Domain::NONNEG, f_g: Domain::NONNEG, f_b: Domain::NONNEG],
+        pick(coupling, 3, |k| {
+            o3(material::metallic_roughness_fast(
+                cosines(n_dot_v, n_dot_l, n_dot_h, v_dot_h),
+                v3(base_color_r, base_color_g, base_color_b),
+                metallic,
+                roughness,
+                dielectric_f0,
+                self::coupling(k),
+            ))
+        })
+    ),
+    kernel!(
+        "material::gltf_fast",
+        "glTF 2.0 metallic-roughness BRDF in working precision, RGB, Khronos glTF 2.0 Appendix B",
+        [n_dot_v: Domain::COS, n_dot_l: Domain::COS, n_dot_h: Domain::COS, v_dot_h: Domain::COS,
+         base_color_r: Domain::UNIT, base_color_g: Domain::UNIT, base_color_b: Domain::UNIT,
+         metallic: Domain::UNIT, roughness: Domain::UNIT]
+            -> [f_r: Domain::NONNEG, f_g: Domain::NONNEG, f_b: Domain::NONNEG],
+        o3(material::gltf_fast(
+            cosines(n_dot_v, n_dot_l, n_dot_h, v_dot_h),
+            v3(base_color_r, base_color_g, base_color_b),
+            metallic,
+            roughness,
+        ))
+    ),
+    kernel!(
+        "material::MetallicRoughness::eval_fast",
+        "glTF metallic-roughness BRDF on local-frame directions in working precision, RGB, \
+         glTF 2.0 Appendix B",
+        [base_color_r: Domain::UNIT, base_color_g: Domain::UNIT, base_color_b: Domain::UNIT,
+         metallic: Domain::UNIT, roughness: Domain::UNIT,
+         wo_x: Domain::DIR, wo_y: Domain::DIR, wo_z: Domain::DIR,
+         wi_x: Domain::DIR, wi_y: Domain::DIR, wi_z: Domain::DIR]
+            -> [f_r: Domain::NONNEG, f_g: Domain::NONNEG, f_b: Domain::NONNEG],
+        built(
+            MetallicRoughness::new(
+                v3(base_color_r, base_color_g, base_color_b),
+                metallic,
+                roughness,
+            ),
+            |m| o3(m.eval_fast(v3(wo_x, wo_y, wo_z), v3(wi_x, wi_y, wi_z))),
+        )
+    ),
+    kernel!(
         "material::MetallicRoughness::specular_probability",
         "Probability of sampling the specular lobe, S / (S + D) kept in [1/16, 15/16] \
          (one-sample MIS)",

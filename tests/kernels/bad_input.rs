@@ -1882,6 +1882,25 @@ fn material_rows<T: Real>(t: &mut Vec<Kernel<T>>) {
         let mut a = args();
         a.push(p("dielectric_f0", 0.04, &UNIT_BAD));
         t.push(k(
+            &format!("material::metallic_roughness_fast({coupling:?})"),
+            a.clone(),
+            move |x| {
+                o3(metallic_roughness_fast(
+                    Cosines {
+                        n_dot_v: x[0],
+                        n_dot_l: x[1],
+                        n_dot_h: x[2],
+                        v_dot_h: x[3],
+                    },
+                    v3(x, 4),
+                    x[7],
+                    x[8],
+                    x[9],
+                    coupling,
+                ))
+            },
+        ));
+        t.push(k(
             &format!("material::metallic_roughness({coupling:?})"),
             a,
             move |x| {
@@ -1901,6 +1920,19 @@ fn material_rows<T: Real>(t: &mut Vec<Kernel<T>>) {
             },
         ));
     }
+    t.push(k("material::gltf_fast", args(), |x| {
+        o3(gltf_fast(
+            Cosines {
+                n_dot_v: x[0],
+                n_dot_l: x[1],
+                n_dot_h: x[2],
+                v_dot_h: x[3],
+            },
+            v3(x, 4),
+            x[7],
+            x[8],
+        ))
+    }));
     t.push(k("material::gltf", args(), |x| {
         o3(gltf(
             Cosines {
@@ -1934,6 +1966,11 @@ fn material_rows<T: Real>(t: &mut Vec<Kernel<T>>) {
             &format!("MetallicRoughness::eval({label})"),
             vec![dirs()],
             move |x| o3(m.eval(v3(x, 0), v3(x, 3))),
+        ));
+        t.push(k(
+            &format!("MetallicRoughness::eval_fast({label})"),
+            vec![dirs()],
+            move |x| o3(m.eval_fast(v3(x, 0), v3(x, 3))),
         ));
         t.push(k(
             &format!("MetallicRoughness::specular_probability({label})"),

@@ -5,6 +5,7 @@
 //! - `energy`: directional albedo
 //! - `engine_conventions`: the five engines' convention sets against f32 transcriptions of
 //!   their shaders
+//! - `fast_tier`: the working-precision tier against the exact tier
 //! - `gltf_composition`: equals the formulas of glTF, Unreal and Filament
 //! - `reciprocity`: Helmholtz reciprocity per RGB channel
 //! - `sampling`: the lobe-selection sampler against its pdf
@@ -16,6 +17,7 @@ mod common;
 
 mod energy;
 mod engine_conventions;
+mod fast_tier;
 mod gltf_composition;
 mod reciprocity;
 mod sampling;

@@ -540,8 +540,26 @@ pub fn direct<T: Scalar>(path: &str, a: &[T]) -> Option<Vec<T>> {
                 coupling,
             ))
         }
+        "material::metallic_roughness_fast" => {
+            let coupling = match idx(a[10]) {
+                0 => DiffuseCoupling::Gltf,
+                1 => DiffuseCoupling::OneMinusF,
+                2 => DiffuseCoupling::Additive,
+                c => panic!("no coupling {c}"),
+            };
+            three(material::metallic_roughness_fast(
+                c(a, 0),
+                v(a, 4),
+                a[7],
+                a[8],
+                a[9],
+                coupling,
+            ))
+        }
         "material::gltf" => three(material::gltf(c(a, 0), v(a, 4), a[7], a[8])),
+        "material::gltf_fast" => three(material::gltf_fast(c(a, 0), v(a, 4), a[7], a[8])),
         "material::MetallicRoughness::eval" => three(mr(a).eval(v(a, 5), v(a, 8))),
+        "material::MetallicRoughness::eval_fast" => three(mr(a).eval_fast(v(a, 5), v(a, 8))),
         "material::MetallicRoughness::specular_probability" => {
             vec![mr(a).specular_probability(v(a, 5))]
         }
