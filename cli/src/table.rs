@@ -1524,6 +1524,15 @@ pub static KERNELS: &[Kernel] = &[
         o3(cook_torrance::ggx_conductor_rgb(cosines(n_dot_v, n_dot_l, n_dot_h, v_dot_h), Alpha(alpha), ComplexIor { eta: v3(eta_r, eta_g, eta_b), k: v3(k_r, k_g, k_b) }))
     ),
     kernel!(
+        "cook_torrance::ggx_conductor_rgb_fast",
+        "Rough conductor, GGX, RGB, working precision (D_GGX, conductor_fast), Cook and Torrance \
+         1982; Guy and Agopian 2018",
+        [n_dot_v: Domain::COS, n_dot_l: Domain::COS, n_dot_h: Domain::COS, v_dot_h: Domain::COS,
+         alpha: ALPHA, eta_r: ETA, eta_g: ETA, eta_b: ETA, k_r: KAPPA, k_g: KAPPA, k_b: KAPPA]
+            -> [f_r: Domain::NONNEG, f_g: Domain::NONNEG, f_b: Domain::NONNEG],
+        o3(cook_torrance::ggx_conductor_rgb_fast(cosines(n_dot_v, n_dot_l, n_dot_h, v_dot_h), Alpha(alpha), ComplexIor { eta: v3(eta_r, eta_g, eta_b), k: v3(k_r, k_g, k_b) }))
+    ),
+    kernel!(
         "cook_torrance::ggx_schlick_rgb",
         "GGX with Schlick's Fresnel of an RGB F0 (glTF, Filament, UE4), Schlick 1994; Walter et \
          al. 2007",

@@ -3,10 +3,12 @@
 //! <module>::` runs one module. Each module keeps its own feature gate.
 //!
 //! - `energy`: energy and reciprocity, by the public integrators
+//! - `fast_tier`: the working-precision rough conductor against the exact tier
 //! - `rgb`: the Fresnel-specific dot-product forms against the generic assembly
 
 #[path = "../common/mod.rs"]
 mod common;
 
 mod energy;
+mod fast_tier;
 mod rgb;

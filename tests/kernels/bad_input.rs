@@ -1106,6 +1106,41 @@ fn cook_torrance_rows<T: Real>(t: &mut Vec<Kernel<T>>) {
         ));
         t.push(
             k(
+                "cook_torrance::ggx_conductor_rgb_fast",
+                vec![
+                    c("n_dot_h", NH),
+                    c("n_dot_v", NV),
+                    c("n_dot_l", NL),
+                    c("v_dot_h", VH),
+                    p("alpha", 0.3, &ALPHA_BAD),
+                    rgb("eta", [0.18, 0.42, 1.37], &ETA_BAD),
+                    rgb("k", [3.42, 2.35, 1.77], &NONNEG_BAD),
+                ],
+                |x| {
+                    o3(ct::ggx_conductor_rgb_fast(
+                        Cosines {
+                            n_dot_v: x[1],
+                            n_dot_l: x[2],
+                            n_dot_h: x[0],
+                            v_dot_h: x[3],
+                        },
+                        Alpha(x[4]),
+                        ComplexIor {
+                            eta: v3(x, 5),
+                            k: v3(x, 8),
+                        },
+                    ))
+                },
+            )
+            .dep("eta.x", &[0])
+            .dep("eta.y", &[1])
+            .dep("eta.z", &[2])
+            .dep("k.x", &[0])
+            .dep("k.y", &[1])
+            .dep("k.z", &[2]),
+        );
+        t.push(
+            k(
                 "cook_torrance::ggx_conductor_rgb",
                 vec![
                     c("n_dot_h", NH),

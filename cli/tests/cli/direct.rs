@@ -260,6 +260,14 @@ pub fn direct<T: Scalar>(path: &str, a: &[T]) -> Option<Vec<T>> {
                 k: v(a, 8),
             },
         )),
+        "cook_torrance::ggx_conductor_rgb_fast" => three(cook_torrance::ggx_conductor_rgb_fast(
+            c(a, 0),
+            Alpha(a[4]),
+            ComplexIor {
+                eta: v(a, 5),
+                k: v(a, 8),
+            },
+        )),
         "cook_torrance::ggx_schlick_rgb" => three(cook_torrance::ggx_schlick_rgb(
             c(a, 0),
             Alpha(a[4]),
