@@ -155,6 +155,98 @@ fn groups<T: Real, const N: usize, const I: usize, const O: usize>(
     }
 }
 
+/// Elements per task of the parallel forms ([`par_run`]): 2^14, a multiple of every lane
+/// count. Large enough that a task (tens of microseconds for the cheapest kernel) dwarfs
+/// rayon's cost of scheduling it, small enough that 10^6 elements make 61 tasks to balance
+/// over the cores.
+#[cfg(feature = "rayon")]
+pub const PAR_CHUNK: usize = 1 << 14;
+
+/// One chunk of [`par_run`]: its input slices and its output slices.
+#[cfg(feature = "rayon")]
+type Task<'a, S, const I: usize, const O: usize> = ([&'a [S]; I], [&'a mut [S]; O]);
+
+/// [`run`] over all cores with `rayon`: the slices are cut into chunks of [`PAR_CHUNK`]
+/// elements (the last one shorter), and each chunk is one [`run`] on rayon's global thread
+/// pool (or the pool of an enclosing `ThreadPool::install`). The kernel is shared by every
+/// thread, so it is `Fn + Sync` (a `move` closure over `Copy` parameters is). Every element's
+/// result is bit for bit what [`run`] gives: chunks are whole groups of lanes, so the
+/// grouping, and with it each element's evaluation, is [`run`]'s (lanes do not interact;
+/// `tests/lanes/batch_par.rs`). Batches of at most one chunk run on the calling thread.
+///
+/// Behind the feature `rayon`, which needs `std` (the crate stays `no_std` without it).
+///
+/// # Errors
+/// As [`run`]: slices of different lengths (checked before any work, nothing written).
+#[cfg(feature = "rayon")]
+pub fn par_run<T: Real, const I: usize, const O: usize>(
+    inputs: [&[T::Scalar]; I],
+    outputs: [&mut [T::Scalar]; O],
+    kernel: impl Fn([T; I]) -> [T; O] + Sync,
+) -> Result<usize, ParamError>
+where
+    T::Scalar: Send + Sync,
+{
+    use rayon::prelude::*;
+    extern crate alloc;
+    use alloc::vec::Vec;
+
+    let n = match (inputs.first(), outputs.first()) {
+        (Some(s), _) => s.len(),
+        (None, Some(s)) => s.len(),
+        (None, None) => return Ok(0),
+    };
+    if inputs.iter().any(|s| s.len() != n) || outputs.iter().any(|s| s.len() != n) {
+        // `run` names the slice that differs.
+        return run::<T, I, O>(inputs, outputs, kernel);
+    }
+    if n <= PAR_CHUNK {
+        return run::<T, I, O>(inputs, outputs, kernel);
+    }
+    // One task per chunk: its input slices and its (disjoint) output slices.
+    let mut outs: [_; O] = outputs.map(|o| o.chunks_mut(PAR_CHUNK));
+    let tasks: Vec<Task<'_, T::Scalar, I, O>> = (0..n.div_ceil(PAR_CHUNK))
+        .map(|c| {
+            let lo = c * PAR_CHUNK;
+            let hi = (lo + PAR_CHUNK).min(n);
+            let ins = inputs.map(|s| s.get(lo..hi).unwrap_or(&[]));
+            let os = core::array::from_fn(|k| outs[k].next().unwrap_or_default());
+            (ins, os)
+        })
+        .collect();
+    tasks.into_par_iter().for_each(|(ins, os)| {
+        // Each chunk's slices have one length: `run` cannot fail here.
+        let _ = run::<T, I, O>(ins, os, &kernel);
+    });
+    Ok(n)
+}
+
+/// [`par_run`] on `f32x8` lanes over `f32` slices.
+///
+/// # Errors
+/// As [`run`]: slices of different lengths.
+#[cfg(feature = "rayon")]
+pub fn par_run_f32<const I: usize, const O: usize>(
+    inputs: [&[f32]; I],
+    outputs: [&mut [f32]; O],
+    kernel: impl Fn([f32x8; I]) -> [f32x8; O] + Sync,
+) -> Result<usize, ParamError> {
+    par_run::<f32x8, I, O>(inputs, outputs, kernel)
+}
+
+/// [`par_run`] on `f64x4` lanes over `f64` slices.
+///
+/// # Errors
+/// As [`run`]: slices of different lengths.
+#[cfg(feature = "rayon")]
+pub fn par_run_f64<const I: usize, const O: usize>(
+    inputs: [&[f64]; I],
+    outputs: [&mut [f64]; O],
+    kernel: impl Fn([f64x4; I]) -> [f64x4; O] + Sync,
+) -> Result<usize, ParamError> {
+    par_run::<f64x4, I, O>(inputs, outputs, kernel)
+}
+
 /// [`run`] on `f32x8` lanes over `f32` slices.
 ///
 /// # Errors

@@ -56,7 +56,7 @@
 //! | [`frame`] | orthonormal basis from a normal, local-frame `cos_theta`/`tan2_theta`/`cos_phi` | always |
 //! | [`shading`] | a shading point's [`Cosines`] (n.v, n.l, n.h, v.h) and world-to-local [`ShadingPoint`]; the crate's one argument order | always |
 //! | [`error`] | [`ParamError`], returned by parameter constructors | always |
-//! | [`batch`] | any kernel over structure-of-arrays slices, 8 `f32` / 4 `f64` at a time | always |
+//! | [`batch`] | any kernel over structure-of-arrays slices, 8 `f32` / 4 `f64` at a time; over all cores with `par_run` | always; `par_run` with `rayon` (needs `std`) |
 //! | `fresnel` | Schlick (+F90, SG), exact dielectric and polarized, conductor, F82 tint | `fresnel` |
 //! | `microfacet` | the `Microfacet` trait (D, Lambda, G1, G2) shared by the NDFs | `microfacet` |
 //! | `ggx` | GGX / Trowbridge-Reitz, isotropic and anisotropic, real-time V approximations | `ggx` |
@@ -124,6 +124,9 @@
 #![no_std]
 #![deny(missing_docs)]
 #![forbid(unsafe_code)]
+// `batch::par_run` (feature `rayon`) runs on rayon's thread pool, which needs std.
+#[cfg(feature = "rayon")]
+extern crate std;
 
 pub mod batch;
 pub mod error;

@@ -56,7 +56,9 @@
 //! transcribes Filament's `surface_brdf.fs` into scalar `f32`, one element at a time: a
 //! yardstick, not a crate kernel) and the copy floor on `f32x8` with `std::time::Instant`, after one untimed run of each,
 //! `BRDF_THROUGHPUT_RUNS` times (default 7), and prints one line per run:
-//! `time <kernel> <milliseconds>`. With `BRDF_THROUGHPUT_OUTPUT=<dir>` it also writes each
+//! `time <kernel> <milliseconds>`. With `BRDF_THROUGHPUT_PARALLEL=1` every `batch` row runs
+//! through `batch::par_run_f32` on all cores (rayon's global pool; the textbook scalar row
+//! and the copy stay on one thread). With `BRDF_THROUGHPUT_OUTPUT=<dir>` it also writes each
 //! kernel's outputs there as raw `f32` (`<kernel>.f32`; the material rows' red channel), for
 //! the script to compare values.
 
@@ -451,6 +453,20 @@ fn material_textbook(v: [f32; 3], l: [f32; 3]) -> [f32; 3] {
     })
 }
 
+/// `batch::run_f32`, or `batch::par_run_f32` over all cores when `par`.
+fn run8<const I: usize, const O: usize>(
+    par: bool,
+    inputs: [&[f32]; I],
+    outputs: [&mut [f32]; O],
+    kernel: impl Fn([f32x8; I]) -> [f32x8; O] + Sync,
+) -> Result<usize, brdf::ParamError> {
+    if par {
+        batch::par_run_f32(inputs, outputs, kernel)
+    } else {
+        batch::run_f32(inputs, outputs, kernel)
+    }
+}
+
 /// The timing mode for `bench/mitsuba/compare.py` (module docs).
 fn timing_mode(path: &str) -> Result<(), String> {
     let bytes = std::fs::read(path).map_err(|e| format!("{path}: {e}"))?;
@@ -477,6 +493,8 @@ fn timing_mode(path: &str) -> Result<(), String> {
         .and_then(|s| s.parse().ok())
         .unwrap_or(7);
     let out_dir = std::env::var("BRDF_THROUGHPUT_OUTPUT").ok();
+    // Over all cores with `batch::par_run_f32` (rayon's global pool) instead of one thread.
+    let par = std::env::var("BRDF_THROUGHPUT_PARALLEL").is_ok_and(|v| v == "1");
     let mut out = vec![0.0f32; n];
     let alpha = f32x8::splat(ALPHA as f32);
     let (eta, k) = (f32x8::splat(ETA as f32), f32x8::splat(K as f32));
@@ -500,37 +518,37 @@ fn timing_mode(path: &str) -> Result<(), String> {
         (
             "ggx_d",
             Box::new(|o: &mut [f32]| {
-                let _ = batch::run_f32([a[2]], [o], move |[z]| [ggx::d(z, alpha)]);
+                let _ = run8(par, [a[2]], [o], move |[z]| [ggx::d(z, alpha)]);
             }),
         ),
         (
             "ggx_d_plain",
             Box::new(|o: &mut [f32]| {
-                let _ = batch::run_f32([a[2]], [o], move |[z]| [ggx_d_plain(z, alpha)]);
+                let _ = run8(par, [a[2]], [o], move |[z]| [ggx_d_plain(z, alpha)]);
             }),
         ),
         (
             "ggx_d_fast",
             Box::new(|o: &mut [f32]| {
-                let _ = batch::run_f32([a[2]], [o], move |[z]| [ggx::d_fast(z, alpha)]);
+                let _ = run8(par, [a[2]], [o], move |[z]| [ggx::d_fast(z, alpha)]);
             }),
         ),
         (
             "beckmann_d",
             Box::new(|o: &mut [f32]| {
-                let _ = batch::run_f32([a[2]], [o], move |[z]| [beckmann::d(z, alpha)]);
+                let _ = run8(par, [a[2]], [o], move |[z]| [beckmann::d(z, alpha)]);
             }),
         ),
         (
             "beckmann_d_fast",
             Box::new(|o: &mut [f32]| {
-                let _ = batch::run_f32([a[2]], [o], move |[z]| [beckmann::d_fast(z, alpha)]);
+                let _ = run8(par, [a[2]], [o], move |[z]| [beckmann::d_fast(z, alpha)]);
             }),
         ),
         (
             "rough_conductor",
             Box::new(|o: &mut [f32]| {
-                let _ = batch::run_f32(a, [o], move |[vx, vy, vz, lx, ly, lz]| {
+                let _ = run8(par, a, [o], move |[vx, vy, vz, lx, ly, lz]| {
                     let (v, l) = (V3::new(vx, vy, vz), V3::new(lx, ly, lz));
                     let s = v + l;
                     // `Real::recip`, not `wide`'s inherent `recip` (a 12-bit estimate on AVX).
@@ -553,7 +571,7 @@ fn timing_mode(path: &str) -> Result<(), String> {
         (
             "rough_conductor_fast",
             Box::new(|o: &mut [f32]| {
-                let _ = batch::run_f32(a, [o], move |[vx, vy, vz, lx, ly, lz]| {
+                let _ = run8(par, a, [o], move |[vx, vy, vz, lx, ly, lz]| {
                     let (v, l) = (V3::new(vx, vy, vz), V3::new(lx, ly, lz));
                     let (nh, vh) = cook_torrance::half_cosines(v, l);
                     let f = fresnel::conductor_fast(vh, eta, k);
@@ -567,7 +585,7 @@ fn timing_mode(path: &str) -> Result<(), String> {
             "rough_conductor_fast_borrowed",
             Box::new(|o: &mut [f32]| {
                 let (alpha, eta, k) = (&alpha, &eta, &k);
-                let _ = batch::run_f32(a, [o], |[vx, vy, vz, lx, ly, lz]| {
+                let _ = run8(par, a, [o], |[vx, vy, vz, lx, ly, lz]| {
                     let (v, l) = (V3::new(vx, vy, vz), V3::new(lx, ly, lz));
                     let (nh, vh) = cook_torrance::half_cosines(v, l);
                     let f = fresnel::conductor_fast(vh, *eta, *k);
@@ -580,7 +598,8 @@ fn timing_mode(path: &str) -> Result<(), String> {
             // material rows are compared channel 0 against channel 0).
             "material_gltf",
             Box::new(move |o: &mut [f32]| {
-                let _ = batch::run_f32(
+                let _ = run8(
+                    par,
                     a,
                     [o, &mut g1[..], &mut b1[..]],
                     move |[vx, vy, vz, lx, ly, lz]| {
@@ -605,7 +624,8 @@ fn timing_mode(path: &str) -> Result<(), String> {
         (
             "material_gltf_fast",
             Box::new(move |o: &mut [f32]| {
-                let _ = batch::run_f32(
+                let _ = run8(
+                    par,
                     a,
                     [o, &mut g2[..], &mut b2[..]],
                     move |[vx, vy, vz, lx, ly, lz]| {

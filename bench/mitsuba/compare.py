@@ -109,9 +109,11 @@ def build_brdf(repo, target_dir):
     raise RuntimeError("cargo did not report the throughput executable")
 
 
-def run_brdf(exe, raw, runs, out_dir=None):
-    """One brdf timing run: {kernel: [ms, ...]}."""
-    env = dict(os.environ, BRDF_THROUGHPUT_INPUT=raw, BRDF_THROUGHPUT_RUNS=str(runs))
+def run_brdf(exe, raw, runs, out_dir=None, parallel=False):
+    """One brdf timing run: {kernel: [ms, ...]}; over all cores (`batch::par_run_f32`) when
+    `parallel`."""
+    env = dict(os.environ, BRDF_THROUGHPUT_INPUT=raw, BRDF_THROUGHPUT_RUNS=str(runs),
+               BRDF_THROUGHPUT_PARALLEL="1" if parallel else "0")
     if out_dir:
         env["BRDF_THROUGHPUT_OUTPUT"] = out_dir
     out = subprocess.run([exe], env=env, check=True, capture_output=True, text=True)
@@ -234,9 +236,15 @@ def main():
     p.add_argument("--brdf-exe", help="a built throughput bench binary (skips the build)")
     p.add_argument("--target-dir", default="target/native", help="CARGO_TARGET_DIR of the build")
     p.add_argument("--no-pin", action="store_true", help="do not pin to core 0")
+    p.add_argument("--parallel", action="store_true",
+                   help="all cores, unpinned: drjit with one worker per core, brdf through "
+                        "batch::par_run_f32 (rayon), and brdf on one thread beside it")
     p.add_argument("--check", type=int, default=1000,
                    help="elements on which mpmath checks the float64 reference")
     args = p.parse_args()
+    if args.parallel:
+        args.no_pin = True
+        args.threads = len(os.sched_getaffinity(0))
     pin_to_one_core(args)
     repo = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
     exe = args.brdf_exe or build_brdf(repo, os.path.join(repo, args.target_dir))
@@ -277,13 +285,17 @@ def main():
 
         mi_ms = {name: [] for name in KERNELS}
         brdf_ms = {name: [] for name in KERNELS + list(FAST) + ["ggx_d_plain", "copy"]}
+        brdf1_ms = {}
         for _ in range(args.rounds):
             for name in KERNELS:
                 mi_ms[name].append(time_mitsuba(kernels[name])[0])
-            for name, ms in run_brdf(exe, raw, 1).items():
+            for name, ms in run_brdf(exe, raw, 1, parallel=args.parallel).items():
                 # Rows the table does not show (a borrowing-closure variant) are kept for the
                 # per-round listing.
                 brdf_ms.setdefault(name, []).extend(ms)
+            if args.parallel:
+                for name, ms in run_brdf(exe, raw, 1).items():
+                    brdf1_ms.setdefault(name, []).extend(ms)
 
     med = {k: statistics.median(v) for k, v in brdf_ms.items() if v}
     copy = med["copy"]
@@ -324,6 +336,18 @@ def main():
             mx, md = material_err.get(row, (0.0, 0.0))
             print(f"| {label} | {b:.2f} ms | {b * 1e6 / args.n:.2f} | {t / b:.2f} "
                   f"| max {mx:.3g} ULP, median {md:.2g} |")
+    if args.parallel:
+        print(f"\n| kernel, all {args.threads} cores ({args.n:.0e} elements) | Mitsuba 3, "
+              f"{args.threads} threads | brdf, batch::par_run_f32 | brdf, one thread "
+              f"| brdf speed-up | brdf / Mitsuba |")
+        print("|---|---|---|---|---|---|")
+        for name in KERNELS + list(FAST):
+            if name not in med or name not in brdf1_ms:
+                continue
+            m = statistics.median(mi_ms[FAST.get(name, name)])
+            b, b1 = med[name], statistics.median(brdf1_ms[name])
+            print(f"| {LABELS[name]} | {m:.2f} ms | {b:.2f} ms | {b1:.2f} ms | {b1 / b:.2f} "
+                  f"| {b / m:.2f} |")
     print("\nULP: each result against the function it computes, evaluated exactly on the same "
           "f32 inputs (bench/mitsuba/reference.py): max and median over all "
           f"{args.n} elements whose exact value is 0 or a normal f32; max relative error; "

@@ -3,6 +3,7 @@
 //! <module>::` runs one module. Each module keeps its own feature gate.
 //!
 //! - `batch`: `batch::run` equals the kernel element by element
+//! - `batch_par`: `batch::par_run` (feature `rayon`) equals `batch::run`
 //! - `exp`: the f32x8 lane exp
 //! - `frame`: shading frames are orthonormal and round-trip
 //! - `scalar_instructions`: scalar `mul_add` and `sqrt` keep their definitions
@@ -13,6 +14,7 @@
 mod common;
 
 mod batch;
+mod batch_par;
 mod exp;
 mod frame;
 mod scalar_instructions;
