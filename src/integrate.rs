@@ -20,7 +20,7 @@
 //! to `f64`; the integration itself (abscissae, weights, sums, error estimate) is the `f64`
 //! one, so an `f32` kernel's estimate differs from its `f64` twin's by the kernel's own
 //! rounding only (`tests/integrate/generic.rs`). The directions are the crate's own
-//! [`V3`](crate::V3), so a kernel of this crate takes them as they come; a kernel written on
+//! [`V3`], so a kernel of this crate takes them as they come; a kernel written on
 //! glam's vectors converts each one with `into()` (`V3<f64>` into `DVec3`, `V3<f32>` into
 //! `Vec3`):
 //!
