@@ -1,0 +1,56 @@
+//! WGSL twins of the kernels, as source text for shaders.
+//!
+//! Each constant is one family's WGSL source (the files under `wgsl/` in the repository): the
+//! functions are named by the Rust kernel's path with `::` written `_` (`ggx::d` is `ggx_d`,
+//! `fresnel::schlick_f90` is `fresnel_schlick_f90`), take the Rust kernel's arguments in the
+//! same order (a `V3` argument as its three components `w_x, w_y, w_z`, as the reference CLI
+//! `brdf-ref --list` prints them), and use the same numerically stable forms (GGX D's
+//! cancellation-free denominator (1 - c)(1 + c) + c^2 alpha^2, the alpha clamps
+//! `ALPHA_MIN`/`ALPHA_MAX`, the caps at the largest finite value). Multi-channel results are
+//! `vec3<f32>`. Helpers shared by the families are prefixed `brdf_` and live in [`COMMON`].
+//!
+//! # Composing
+//! [`COMMON`] must come first; each family needs only [`COMMON`], no family defines a name
+//! another family defines, so any subset concatenated after [`COMMON`] is one valid WGSL module:
+//!
+//! ```
+//! let source = [brdf::wgsl::COMMON, brdf::wgsl::GGX, brdf::wgsl::FRESNEL].concat();
+//! assert!(source.contains("fn ggx_d(n_dot_h: f32, alpha: f32) -> f32"));
+//! ```
+//!
+//! [`ALL`] is every family in that order. With `wgpu`, pass the concatenation followed by
+//! your own entry points to `device.create_shader_module` as `ShaderSource::Wgsl`; with
+//! `naga_oil` or WESL, register [`COMMON`] and each family as a module of its own.
+//!
+//! # What differs from the Rust kernels
+//! The twins compute in `f32`, rounding every operation: the Rust kernels that round once
+//! through double words (`ggx::d`, `ggx::lambda`, `fresnel::f0_from_ior`, ...) carry error-free
+//! transformations that a WGSL implementation may undo, since it may reassociate and contract
+//! floating-point operations (W3C, "WebGPU Shading Language", section "Floating Point
+//! Evaluation"). WGSL also promises nothing for infinities and NaN, so the Rust kernels' rule
+//! "NaN in, NaN out" has no twin: a NaN or infinite argument gives an unspecified value. The
+//! repository's `brdf-gpu` workspace member runs every twin on a GPU API and holds it, input
+//! by input, to an error bound derived from the accuracy table of that same section.
+
+/// Constants and helpers every family uses (pi, the largest finite `f32`, the alpha clamps,
+/// 1 - c^2 without cancellation). Include it once, first.
+pub const COMMON: &str = include_str!("../wgsl/common.wgsl");
+
+/// The twins of `brdf::ggx`'s free functions: D, the fast D, anisotropic D, Lambda, G1,
+/// the height-correlated V and its Hammon and Filament fast forms, Schlick's G1, k and V.
+pub const GGX: &str = include_str!("../wgsl/ggx.wgsl");
+
+/// The twins of `brdf::fresnel`'s Schlick family (plain, F90, spherical Gaussian, F82 tint,
+/// RGB forms), F0 and IOR conversions and the dielectric average's fit.
+pub const FRESNEL: &str = include_str!("../wgsl/fresnel.wgsl");
+
+/// [`COMMON`] followed by every family: one module defining every twin.
+pub const ALL: &str = concat!(
+    include_str!("../wgsl/common.wgsl"),
+    include_str!("../wgsl/ggx.wgsl"),
+    include_str!("../wgsl/fresnel.wgsl"),
+);
+
+/// Every family's source with its name (for tools that compile each family on its own after
+/// [`COMMON`]).
+pub const FAMILIES: &[(&str, &str)] = &[("ggx", GGX), ("fresnel", FRESNEL)];
