@@ -10,8 +10,10 @@
 //! `vec3<f32>`. Helpers shared by the families are prefixed `brdf_` and live in [`COMMON`].
 //!
 //! # Composing
-//! [`COMMON`] must come first; each family needs only [`COMMON`], no family defines a name
-//! another family defines, so any subset concatenated after [`COMMON`] is one valid WGSL module:
+//! [`COMMON`] must come first, then each family after the families it calls into
+//! ([`Family::needs`]: only [`COOK_TORRANCE`] needs others, [`GGX`] and [`FRESNEL`]). No
+//! family defines a name another family defines, so any such subset concatenated after
+//! [`COMMON`] is one valid WGSL module:
 //!
 //! ```
 //! let source = [brdf::wgsl::COMMON, brdf::wgsl::GGX, brdf::wgsl::FRESNEL].concat();
@@ -44,13 +46,56 @@ pub const GGX: &str = include_str!("../wgsl/ggx.wgsl");
 /// RGB forms), F0 and IOR conversions and the dielectric average's fit.
 pub const FRESNEL: &str = include_str!("../wgsl/fresnel.wgsl");
 
-/// [`COMMON`] followed by every family: one module defining every twin.
+/// The twins of `brdf::beckmann`'s D, fast D, Smith's a, Walter's rational Lambda and the
+/// Blinn-Phong exponent conversions.
+pub const BECKMANN: &str = include_str!("../wgsl/beckmann.wgsl");
+
+/// The twins of `brdf::cook_torrance`'s half-vector cosines and isotropic GGX lobes from dot
+/// products (constant F, Schlick RGB). Needs [`GGX`] and [`FRESNEL`] before it.
+pub const COOK_TORRANCE: &str = include_str!("../wgsl/cook_torrance.wgsl");
+
+/// [`COMMON`] followed by every family, each after the families it needs: one module defining
+/// every twin.
 pub const ALL: &str = concat!(
     include_str!("../wgsl/common.wgsl"),
     include_str!("../wgsl/ggx.wgsl"),
     include_str!("../wgsl/fresnel.wgsl"),
+    include_str!("../wgsl/beckmann.wgsl"),
+    include_str!("../wgsl/cook_torrance.wgsl"),
 );
 
-/// Every family's source with its name (for tools that compile each family on its own after
-/// [`COMMON`]).
-pub const FAMILIES: &[(&str, &str)] = &[("ggx", GGX), ("fresnel", FRESNEL)];
+/// One family's WGSL, with the families it calls into.
+#[derive(Clone, Copy, Debug)]
+pub struct Family {
+    /// The Rust module it twins (`ggx`, `cook_torrance`, ...).
+    pub name: &'static str,
+    /// Its source.
+    pub source: &'static str,
+    /// The families whose functions it calls, in the order to include them (after
+    /// [`COMMON`], before this one).
+    pub needs: &'static [&'static str],
+}
+
+/// Every family, in the order of [`ALL`].
+pub const FAMILIES: &[Family] = &[
+    Family {
+        name: "ggx",
+        source: GGX,
+        needs: &[],
+    },
+    Family {
+        name: "fresnel",
+        source: FRESNEL,
+        needs: &[],
+    },
+    Family {
+        name: "beckmann",
+        source: BECKMANN,
+        needs: &[],
+    },
+    Family {
+        name: "cook_torrance",
+        source: COOK_TORRANCE,
+        needs: &["ggx", "fresnel"],
+    },
+];

@@ -5,7 +5,9 @@
 // in plain f32: where the Rust kernel carries double words (error-free products and sums) to
 // round once, the twin keeps the stable form and rounds each operation, because WGSL lets an
 // implementation reassociate and contract operations, which undoes error-free transformations
-// (W3C WGSL, section "Floating Point Evaluation"). Helpers are prefixed `brdf_`.
+// (W3C WGSL, section "Floating Point Evaluation"). Helpers are prefixed `brdf_`. As in the
+// Rust kernels, guards are `select`, `min`, `max`: no branch, no short-circuit `&&` or `||`
+// (which lower to branches), `&` and `|` on booleans instead.
 //
 // WGSL has no NaN or infinity guarantees (an implementation may assume neither occurs), so the
 // Rust kernels' NaN-in, NaN-out rule has no twin here: a NaN or infinite input gives an

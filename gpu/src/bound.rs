@@ -15,7 +15,7 @@
 //! | `log`, `log2` | absolute 2^-21 for x in [0.5, 2], else 3 + 0.5 | endpoints |
 //! | `pow(x, y)` | `exp2(y * log2(x))`, each step as above | |
 //! | `fma(a, b, c)` | `a * b + c`, two roundings as above | |
-//! | `min`, `max`, `clamp`, `saturate`, `abs`, negation | none (exact) | the larger operand error |
+//! | `min`, `max`, `clamp`, `saturate`, `abs`, negation | none (exact) | exact interval arithmetic |
 //!
 //! The extra half ULP on every operation pays for the freedom the specification gives an
 //! implementation to contract (fuse) and reassociate: one more rounding per operation. Every
@@ -48,6 +48,20 @@ pub struct Num {
     pub v: f64,
     /// The bound on the error of the `f32` evaluation.
     pub e: f64,
+}
+
+impl Num {
+    /// `f(a, b)` for a function monotone in both arguments (`min`, `max`): its exact interval
+    /// from the operands' intervals (no rounding: WGSL's min and max are exact).
+    fn hull(a: Num, b: Num, f: fn(f64, f64) -> f64) -> Num {
+        let v = f(a.v, b.v);
+        let lo = f(a.v - a.e, b.v - b.e);
+        let hi = f(a.v + a.e, b.v + b.e);
+        Num {
+            v,
+            e: (v - lo).max(hi - v),
+        }
+    }
 }
 
 /// A value of the interpreted WGSL.
@@ -412,35 +426,16 @@ impl<'m> Interp<'m> {
                 v: x.v.abs(),
                 e: x.e,
             },
-            M::Min => {
-                let y = y2();
-                Num {
-                    v: x.v.min(y.v),
-                    e: x.e.max(y.e),
-                }
-            }
-            M::Max => {
-                let y = y2();
-                Num {
-                    v: x.v.max(y.v),
-                    e: x.e.max(y.e),
-                }
-            }
+            M::Min => Num::hull(x, y2(), f64::min),
+            M::Max => Num::hull(x, y2(), f64::max),
             M::Clamp => {
                 let (lo, hi) = (y2(), z.expect("clamp's high end"));
-                let m = Num {
-                    v: x.v.max(lo.v),
-                    e: x.e.max(lo.e),
-                };
-                Num {
-                    v: m.v.min(hi.v),
-                    e: m.e.max(hi.e),
-                }
+                Num::hull(Num::hull(x, lo, f64::max), hi, f64::min)
             }
-            M::Saturate => Num {
-                v: x.v.clamp(0.0, 1.0),
-                e: x.e,
-            },
+            M::Saturate => {
+                let (zero, one) = (Num { v: 0.0, e: 0.0 }, Num { v: 1.0, e: 0.0 });
+                Num::hull(Num::hull(x, zero, f64::max), one, f64::min)
+            }
             M::Fma => add(mul(x, y2()), z.expect("fma's addend")),
             M::Sqrt => self.sqrt(x),
             M::InverseSqrt => {

@@ -17,11 +17,11 @@ pub fn wgsl_name(path: &str) -> String {
     path.replace("::", "_")
 }
 
-/// One family's WGSL, parsed and validated after `COMMON`.
+/// One family's WGSL, parsed and validated after `COMMON` and the families it needs.
 pub struct Family {
     /// The family's name (`ggx`, `fresnel`, ...).
     pub name: &'static str,
-    /// `COMMON` followed by the family's source.
+    /// `COMMON`, the families it needs, then the family's own source.
     pub source: String,
     /// The parsed module.
     pub module: Module,
@@ -48,8 +48,17 @@ pub fn parse(source: &str, what: &str) -> Result<(Module, ModuleInfo), String> {
 pub fn families() -> Vec<Family> {
     brdf::wgsl::FAMILIES
         .iter()
-        .map(|&(name, src)| {
-            let source = format!("{}{src}", brdf::wgsl::COMMON);
+        .map(|fam| {
+            let name = fam.name;
+            let mut source = brdf::wgsl::COMMON.to_string();
+            for need in fam.needs {
+                let dep = brdf::wgsl::FAMILIES
+                    .iter()
+                    .find(|f| f.name == *need)
+                    .unwrap_or_else(|| panic!("{name} needs an unknown family {need}"));
+                source += dep.source;
+            }
+            source += fam.source;
             let (module, _) = parse(&source, name).unwrap_or_else(|e| panic!("{e}"));
             Family {
                 name,

@@ -62,7 +62,7 @@ fn all_families_compose_into_one_module() {
     // COMMON first, then every family: no name is defined twice.
     parse(brdf::wgsl::ALL, "brdf::wgsl::ALL").unwrap_or_else(|e| panic!("{e}"));
     let joined: String = std::iter::once(brdf::wgsl::COMMON)
-        .chain(brdf::wgsl::FAMILIES.iter().map(|f| f.1))
+        .chain(brdf::wgsl::FAMILIES.iter().map(|f| f.source))
         .collect();
     assert_eq!(
         joined,
