@@ -54,6 +54,22 @@ pub const BECKMANN: &str = include_str!("../wgsl/beckmann.wgsl");
 /// products (constant F, Schlick RGB). Needs [`GGX`] and [`FRESNEL`] before it.
 pub const COOK_TORRANCE: &str = include_str!("../wgsl/cook_torrance.wgsl");
 
+/// The twins of `brdf::diffuse`'s Lambert, qualitative Oren-Nayar (with its A and B), Burley
+/// and renormalized Burley lobes.
+pub const DIFFUSE: &str = include_str!("../wgsl/diffuse.wgsl");
+
+/// The twins of `brdf::phong`: classic, modified and normalized Phong, Lambert plus Phong,
+/// Blinn-Phong with exact and approximate normalization, the Blinn-Phong NDF.
+pub const PHONG: &str = include_str!("../wgsl/phong.wgsl");
+
+/// The twins of `brdf::lights`: reflected radiance (radiometric and pi c_light), irradiance,
+/// inverse-square, windowed and polynomial falloffs, spot cones.
+pub const LIGHTS: &str = include_str!("../wgsl/lights.wgsl");
+
+/// The twins of `brdf::tonemap`'s sanitize, Reinhard, extended Reinhard and Narkowicz ACES
+/// curves, and of `brdf::color`'s sRGB and Rec.709 transfer, gamma and luminance.
+pub const TONEMAP: &str = include_str!("../wgsl/tonemap.wgsl");
+
 /// [`COMMON`] followed by every family, each after the families it needs: one module defining
 /// every twin.
 pub const ALL: &str = concat!(
@@ -62,6 +78,10 @@ pub const ALL: &str = concat!(
     include_str!("../wgsl/fresnel.wgsl"),
     include_str!("../wgsl/beckmann.wgsl"),
     include_str!("../wgsl/cook_torrance.wgsl"),
+    include_str!("../wgsl/diffuse.wgsl"),
+    include_str!("../wgsl/phong.wgsl"),
+    include_str!("../wgsl/lights.wgsl"),
+    include_str!("../wgsl/tonemap.wgsl"),
 );
 
 /// One family's WGSL, with the families it calls into.
@@ -97,5 +117,25 @@ pub const FAMILIES: &[Family] = &[
         name: "cook_torrance",
         source: COOK_TORRANCE,
         needs: &["ggx", "fresnel"],
+    },
+    Family {
+        name: "diffuse",
+        source: DIFFUSE,
+        needs: &[],
+    },
+    Family {
+        name: "phong",
+        source: PHONG,
+        needs: &[],
+    },
+    Family {
+        name: "lights",
+        source: LIGHTS,
+        needs: &[],
+    },
+    Family {
+        name: "tonemap",
+        source: TONEMAP,
+        needs: &[],
     },
 ];

@@ -18,7 +18,13 @@
 //! | `min`, `max`, `clamp`, `saturate`, `abs`, negation | none (exact) | exact interval arithmetic |
 //!
 //! The extra half ULP on every operation pays for the freedom the specification gives an
-//! implementation to contract (fuse) and reassociate: one more rounding per operation. Every
+//! implementation to contract (fuse) and reassociate: one more rounding per operation. A chain
+//! of `+` and `-` within a function may be summed in any order: each of its additions is
+//! charged in ULP of the sum of its operands' magnitudes, which bounds every partial sum of
+//! every order. A chain of `*` may be multiplied in any order: a row where some order would
+//! overflow or underflow (the product of all operands above 1 beyond the largest `f32`, or of
+//! all below 1 under the smallest normal) is excluded, since an implementation that reorders
+//! it promises nothing there; Mesa's lavapipe does reorder `f * (e * n) * pi` into an overflow. Every
 //! operation also adds 2^-126 (absolute) where its result may be subnormal, since subnormals
 //! may be flushed to zero; a subnormal argument starts with its own magnitude as its error.
 //!
@@ -279,7 +285,23 @@ impl<'m> Interp<'m> {
             },
             Expression::Binary { op, left, right } => {
                 let (a, b) = (self.expr(fr, *left), self.expr(fr, *right));
-                self.binary(*op, a, b)
+                match (*op, &a, &b) {
+                    (BinaryOperator::Add | BinaryOperator::Subtract, Val::Num(x), Val::Num(y)) => {
+                        let y = if *op == BinaryOperator::Add {
+                            *y
+                        } else {
+                            Num { v: -y.v, e: y.e }
+                        };
+                        let span = self.sum_span(fr, h);
+                        Val::Num(add_in(*x, y, span))
+                    }
+                    (BinaryOperator::Multiply, Val::Num(x), Val::Num(y)) => {
+                        let p = mul(*x, *y);
+                        self.check_product_chain(fr, h, p);
+                        Val::Num(p)
+                    }
+                    _ => self.binary(*op, a, b),
+                }
             }
             Expression::Select {
                 condition,
@@ -394,6 +416,74 @@ impl<'m> Interp<'m> {
                     .collect(),
             ),
             (a, b) => panic!("binary {op:?} on {a:?} and {b:?} is not modelled"),
+        }
+    }
+
+    /// The leaves of the chain of `+` and `-` (or of `*`) that `h` heads, within its function:
+    /// the operands an implementation may reorder.
+    fn chain_leaves(
+        fr: &Frame<'m>,
+        h: Handle<Expression>,
+        products: bool,
+        out: &mut Vec<Handle<Expression>>,
+    ) {
+        use BinaryOperator as B;
+        match &fr.f.expressions[h] {
+            Expression::Binary {
+                op: B::Multiply,
+                left,
+                right,
+            } if products => {
+                Self::chain_leaves(fr, *left, products, out);
+                Self::chain_leaves(fr, *right, products, out);
+            }
+            Expression::Binary {
+                op: B::Add | B::Subtract,
+                left,
+                right,
+            } if !products => {
+                Self::chain_leaves(fr, *left, products, out);
+                Self::chain_leaves(fr, *right, products, out);
+            }
+            _ => out.push(h),
+        }
+    }
+
+    /// The sum of the magnitudes (with their errors) of the leaves of the sum `h` heads: no
+    /// partial sum of any reordering of the chain exceeds it, so each addition's rounding is
+    /// charged in ULP of it.
+    fn sum_span(&mut self, fr: &mut Frame<'m>, h: Handle<Expression>) -> f64 {
+        let mut leaves = Vec::new();
+        Self::chain_leaves(fr, h, false, &mut leaves);
+        leaves
+            .into_iter()
+            .map(|l| match self.expr(fr, l) {
+                Val::Num(n) => n.v.abs() + n.e,
+                _ => 0.0,
+            })
+            .sum()
+    }
+
+    /// Excludes the row where some reordering of the chain of products `h` heads (whose
+    /// value is `p`) would overflow (the largest partial product: all leaves above 1), or
+    /// underflow (the smallest: all leaves below 1) while `p` is certainly a normal number.
+    /// Where `p` may be 0 or subnormal, a partial product flushed to 0 stays within its
+    /// bound.
+    fn check_product_chain(&mut self, fr: &mut Frame<'m>, h: Handle<Expression>, p: Num) {
+        let mut leaves = Vec::new();
+        Self::chain_leaves(fr, h, true, &mut leaves);
+        let (mut big, mut small) = (1.0f64, 1.0f64);
+        for l in leaves {
+            if let Val::Num(n) = self.expr(fr, l) {
+                let (lo, hi) = ((n.v.abs() - n.e).max(0.0), n.v.abs() + n.e);
+                big *= hi.max(1.0);
+                small *= lo.min(1.0);
+            }
+        }
+        if big > MAX32 {
+            self.exclude("a reordered product may overflow");
+        } else if small < TINY && p.v.abs() - p.e >= TINY {
+            self.exclude("a reordered product may underflow");
         }
     }
 
@@ -522,11 +612,19 @@ struct Frame<'m> {
 }
 
 fn add(a: Num, b: Num) -> Num {
+    add_in(a, b, 0.0)
+}
+
+/// a + b, its rounding charged in ULP of the larger of the result and `span` (the magnitude
+/// of the sum's chain, which bounds every partial sum of a reordering).
+fn add_in(a: Num, b: Num, span: f64) -> Num {
     let v = a.v + b.v;
     let e = a.e + b.e;
+    let own = allow(v, e, 0.5 + EXTRA);
+    let reordered = (0.5 + EXTRA) * ulp32(span);
     Num {
         v,
-        e: e + allow(v, e, 0.5 + EXTRA),
+        e: e + own.max(reordered),
     }
 }
 
