@@ -7,11 +7,14 @@
 //! `brdf-ref --list` prints them), and use the same numerically stable forms (GGX D's
 //! cancellation-free denominator (1 - c)(1 + c) + c^2 alpha^2, the alpha clamps
 //! `ALPHA_MIN`/`ALPHA_MAX`, the caps at the largest finite value). Multi-channel results are
-//! `vec3<f32>`. Helpers shared by the families are prefixed `brdf_` and live in [`COMMON`].
+//! `vec3<f32>` (`vec2<f32>` for two); an enumerated parameter (the material's diffuse
+//! coupling) is a `u32`. Helpers are prefixed `brdf_`; those shared by the families live in
+//! [`COMMON`].
 //!
 //! # Composing
 //! [`COMMON`] must come first, then each family after the families it calls into
-//! ([`Family::needs`]: only [`COOK_TORRANCE`] needs others, [`GGX`] and [`FRESNEL`]). No
+//! ([`Family::needs`]: [`COOK_TORRANCE`] needs [`GGX`] and [`FRESNEL`], [`MATERIAL`] needs
+//! [`GGX`]). No
 //! family defines a name another family defines, so any such subset concatenated after
 //! [`COMMON`] is one valid WGSL module:
 //!
@@ -35,7 +38,8 @@
 //! by input, to an error bound derived from the accuracy table of that same section.
 
 /// Constants and helpers every family uses (pi, the largest finite `f32`, the alpha clamps,
-/// 1 - c^2 without cancellation). Include it once, first.
+/// 1 - c^2 without cancellation), and the twins of `brdf::microfacet`'s roughness conversions.
+/// Include it once, first.
 pub const COMMON: &str = include_str!("../wgsl/common.wgsl");
 
 /// The twins of `brdf::ggx`'s free functions: D, the fast D, anisotropic D, Lambda, G1,
@@ -70,6 +74,10 @@ pub const LIGHTS: &str = include_str!("../wgsl/lights.wgsl");
 /// curves, and of `brdf::color`'s sRGB and Rec.709 transfer, gamma and luminance.
 pub const TONEMAP: &str = include_str!("../wgsl/tonemap.wgsl");
 
+/// The twins of `brdf::material`'s F0 from reflectance and the metallic-roughness BRDF from
+/// dot products (its three diffuse couplings, and glTF's composition). Needs [`GGX`] before it.
+pub const MATERIAL: &str = include_str!("../wgsl/material.wgsl");
+
 /// [`COMMON`] followed by every family, each after the families it needs: one module defining
 /// every twin.
 pub const ALL: &str = concat!(
@@ -82,6 +90,7 @@ pub const ALL: &str = concat!(
     include_str!("../wgsl/phong.wgsl"),
     include_str!("../wgsl/lights.wgsl"),
     include_str!("../wgsl/tonemap.wgsl"),
+    include_str!("../wgsl/material.wgsl"),
 );
 
 /// One family's WGSL, with the families it calls into.
@@ -137,5 +146,10 @@ pub const FAMILIES: &[Family] = &[
         name: "tonemap",
         source: TONEMAP,
         needs: &[],
+    },
+    Family {
+        name: "material",
+        source: MATERIAL,
+        needs: &["ggx"],
     },
 ];

@@ -45,3 +45,18 @@ fn brdf_sin2(c: f32) -> f32 {
 fn brdf_one_minus_sq(c: f32) -> f32 {
     return (1.0 - c) * (1.0 + c);
 }
+
+// The twins of the Rust module `microfacet`'s roughness conversions.
+
+// alpha = r^2 from the perceptual roughness r (glTF's roughnessFactor, Unreal Engine 4's
+// Roughness; Burley 2012, "Physically-Based Shading at Disney"; Karis 2013, "Real Shading in
+// Unreal Engine 4"), r capped at 100 = sqrt(ALPHA_MAX), alpha clamped to [ALPHA_MIN, ALPHA_MAX].
+fn microfacet_alpha_from_perceptual(roughness: f32) -> f32 {
+    let r = min(roughness, 100.0);
+    return brdf_clamp_alpha(r * r);
+}
+
+// The perceptual roughness r = sqrt(alpha) of a width alpha >= 0.
+fn microfacet_perceptual_from_alpha(alpha: f32) -> f32 {
+    return sqrt(alpha);
+}

@@ -4,8 +4,8 @@
 //!
 //! One table drives both sides: a WGSL function `ggx_d` is the twin of the table's kernel
 //! `ggx::d` (the path with `::` written `_`), its parameters must be the kernel's argument
-//! names in the kernel's order, each `f32`, and its result `f32` for one output or
-//! `vecN<f32>` for N outputs. Functions prefixed `brdf_` are helpers.
+//! names in the kernel's order, each `f32` (`u32` for an enumerated choice), and its result
+//! `f32` for one output or `vecN<f32>` for N outputs. Functions prefixed `brdf_` are helpers.
 
 use brdf_ref::{KERNELS, Kernel};
 use naga::valid::{Capabilities, ModuleInfo, ValidationFlags, Validator};
@@ -137,11 +137,19 @@ pub fn signature_mismatches(families: &[Family]) -> Vec<String> {
                     want.join(", ")
                 ));
             }
-            for a in &f.arguments {
-                if !is_f32(&m.types[a.ty].inner) {
+            for (a, arg) in f.arguments.iter().zip(k.args) {
+                let t = &m.types[a.ty].inner;
+                // An enumerated parameter (a choice among integers) is u32, any other f32.
+                let ok = if arg.domain.integer {
+                    matches!(t, TypeInner::Scalar(s) if s.kind == ScalarKind::Uint && s.width == 4)
+                } else {
+                    is_f32(t)
+                };
+                if !ok {
                     out.push(format!(
-                        "{name}: parameter {:?} is not f32",
-                        a.name.as_deref()
+                        "{name}: parameter {:?} is not {}",
+                        a.name.as_deref(),
+                        if arg.domain.integer { "u32" } else { "f32" }
                     ));
                 }
             }
@@ -185,8 +193,18 @@ pub const WORKGROUP: u32 = 64;
 pub fn compute_shader(twin: &Twin, families: &[Family]) -> String {
     let k = twin.kernel;
     let (na, no) = (k.args.len(), k.outputs.len());
-    let args: Vec<String> = (0..na)
-        .map(|j| format!("brdf_in[i * {na}u + {j}u]"))
+    let args: Vec<String> = k
+        .args
+        .iter()
+        .enumerate()
+        .map(|(j, a)| {
+            let x = format!("brdf_in[i * {na}u + {j}u]");
+            if a.domain.integer {
+                format!("u32({x})")
+            } else {
+                x
+            }
+        })
         .collect();
     let stores: String = if no == 1 {
         "    brdf_out[i] = r;\n".to_string()
