@@ -126,3 +126,80 @@ fn ggx_v_schlick(n_dot_v: f32, n_dot_l: f32, k: f32) -> f32 {
     let den = 4.0 * fma(k, 1.0 - cv, cv) * fma(k, 1.0 - cl, cl);
     return select(0.0, min(1.0 / den, BRDF_F32_MAX), den > 0.0);
 }
+
+// The anisotropic distribution `ggx::Ggx` as functions of its constructor's arguments
+// (alpha_x, alpha_y) and local-frame directions (the normal is z). A zero direction takes the
+// horizon's values, as in the Rust methods.
+
+// (1, 0, 0) for the zero vector, else w (vec3::horizon_if_zero3).
+fn brdf_horizon_if_zero(w: vec3<f32>) -> vec3<f32> {
+    let zero = (w.x == 0.0) & (w.y == 0.0) & (w.z == 0.0);
+    return vec3<f32>(select(w.x, 1.0, zero), select(w.y, 0.0, zero), select(w.z, 0.0, zero));
+}
+
+// |z|, q = (alpha_x x)^2 + (alpha_y y)^2 and s = sqrt(z^2 + q) of a direction.
+fn brdf_ggx_smith(alpha_x: f32, alpha_y: f32, w: vec3<f32>) -> vec3<f32> {
+    let v = brdf_horizon_if_zero(w);
+    let ax = brdf_clamp_alpha(alpha_x);
+    let ay = brdf_clamp_alpha(alpha_y);
+    let c = abs(v.z);
+    let px = ax * v.x;
+    let py = ay * v.y;
+    let q = px * px + py * py;
+    return vec3<f32>(c, q, sqrt(c * c + q));
+}
+
+// D(m) = 1 / (pi ax ay ((x / ax)^2 + (y / ay)^2 + z^2)^2) for m.z > 0, else 0 (Heitz 2014,
+// eq. 85).
+fn ggx_Ggx_d(alpha_x: f32, alpha_y: f32, m_x: f32, m_y: f32, m_z: f32) -> f32 {
+    return ggx_d_aniso(m_z, m_x, m_y, alpha_x, alpha_y);
+}
+
+// Lambda(w) = q / (2 |z| (s + |z|)) (Heitz 2014, eq. 86 on vectors), the pole at the horizon
+// capped at the largest finite f32.
+fn ggx_Ggx_lambda(alpha_x: f32, alpha_y: f32, w_x: f32, w_y: f32, w_z: f32) -> f32 {
+    let m = brdf_ggx_smith(alpha_x, alpha_y, vec3<f32>(w_x, w_y, w_z));
+    let den = (m.z + m.x) * (2.0 * m.x);
+    return select(BRDF_F32_MAX, min(m.y / den, BRDF_F32_MAX), den > 0.0);
+}
+
+// |z| Lambda = q / (2 (sqrt(z^2 + q) + |z|)): alpha sin(theta) / 2 at the horizon.
+fn ggx_Ggx_cos_lambda(alpha_x: f32, alpha_y: f32, w_x: f32, w_y: f32, w_z: f32) -> f32 {
+    let m = brdf_ggx_smith(alpha_x, alpha_y, vec3<f32>(w_x, w_y, w_z));
+    return m.y / (2.0 * (m.z + m.x));
+}
+
+// G1(w) = 2 |z| / (|z| + s) (Walter et al. 2007, eq. 34 on vectors).
+fn ggx_Ggx_g1(alpha_x: f32, alpha_y: f32, w_x: f32, w_y: f32, w_z: f32) -> f32 {
+    let m = brdf_ggx_smith(alpha_x, alpha_y, vec3<f32>(w_x, w_y, w_z));
+    return (2.0 * m.x) / (m.x + m.z);
+}
+
+// The separable G2 = G1(wo) G1(wi) (Heitz 2014, eq. 98).
+fn ggx_Ggx_g2_separable(
+    alpha_x: f32, alpha_y: f32, wo_x: f32, wo_y: f32, wo_z: f32, wi_x: f32, wi_y: f32, wi_z: f32,
+) -> f32 {
+    return ggx_Ggx_g1(alpha_x, alpha_y, wo_x, wo_y, wo_z)
+        * ggx_Ggx_g1(alpha_x, alpha_y, wi_x, wi_y, wi_z);
+}
+
+// The height-correlated G2 = 1 / (1 + Lambda(wo) + Lambda(wi)) (Heitz 2014, eq. 99) as
+// 2 |o.z| |i.z| / (|i.z| s_o + |o.z| s_i), capped at 1; 0 where both are at the horizon.
+fn ggx_Ggx_g2_correlated(
+    alpha_x: f32, alpha_y: f32, wo_x: f32, wo_y: f32, wo_z: f32, wi_x: f32, wi_y: f32, wi_z: f32,
+) -> f32 {
+    let o = brdf_ggx_smith(alpha_x, alpha_y, vec3<f32>(wo_x, wo_y, wo_z));
+    let i = brdf_ggx_smith(alpha_x, alpha_y, vec3<f32>(wi_x, wi_y, wi_z));
+    let den = o.z * i.x + i.z * o.x;
+    return select(0.0, min(2.0 * o.x * i.x / den, 1.0), den > 0.0);
+}
+
+// V = G2 / (4 |o.z| |i.z|) = 0.5 / (|i.z| s_o + |o.z| s_i), capped at the largest finite f32;
+// 0 where both are at the horizon.
+fn ggx_Ggx_v_correlated(
+    alpha_x: f32, alpha_y: f32, wo_x: f32, wo_y: f32, wo_z: f32, wi_x: f32, wi_y: f32, wi_z: f32,
+) -> f32 {
+    let o = brdf_ggx_smith(alpha_x, alpha_y, vec3<f32>(wo_x, wo_y, wo_z));
+    let i = brdf_ggx_smith(alpha_x, alpha_y, vec3<f32>(wi_x, wi_y, wi_z));
+    return brdf_ggx_half_over(o.z * i.x + i.z * o.x);
+}
