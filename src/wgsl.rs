@@ -42,8 +42,10 @@
 /// Include it once, first.
 pub const COMMON: &str = include_str!("../wgsl/common.wgsl");
 
-/// The twins of `brdf::ggx`'s free functions: D, the fast D, anisotropic D, Lambda, G1,
-/// the height-correlated V and its Hammon and Filament fast forms, Schlick's G1, k and V.
+/// The twins of `brdf::ggx`'s free functions (D, the fast D, anisotropic D, Lambda, G1, the
+/// height-correlated V and its Hammon and Filament fast forms, Schlick's G1, k and V) and of
+/// `ggx::Ggx`'s methods on local directions (`ggx_Ggx_d`, `ggx_Ggx_lambda`, ..., taking the
+/// constructor's `alpha_x, alpha_y` first).
 pub const GGX: &str = include_str!("../wgsl/ggx.wgsl");
 
 /// The twins of `brdf::fresnel`'s Schlick family (plain, F90, spherical Gaussian, F82 tint,

@@ -48,6 +48,8 @@ pub struct Figures {
     pub min_bound_ulp: f64,
     /// Largest measured / bound.
     pub max_ratio: f64,
+    /// Where it was reached: the row, the GPU's and the CPU's f32 values.
+    pub worst: Option<(Vec<f64>, f32, f32)>,
     /// Values outside their bound (failures), with a description of the first few.
     pub outside: usize,
     /// Values whose twin differs from the Rust kernel by more than the bound on the CPU.
@@ -234,7 +236,10 @@ pub fn run_kernel(gpu: &Gpu, twin: &Twin, families: &[Family], rows: &[Vec<f64>]
                 fig.bound_ulp_at_max = bound_ulp;
             }
             let ratio = diff / allowed;
-            fig.max_ratio = fig.max_ratio.max(ratio);
+            if ratio > fig.max_ratio {
+                fig.max_ratio = ratio;
+                fig.worst = Some((row.clone(), g, c32));
+            }
             if ratio > 1.0 {
                 fig.outside += 1;
                 fig.fail(format!(
@@ -248,16 +253,39 @@ pub fn run_kernel(gpu: &Gpu, twin: &Twin, families: &[Family], rows: &[Vec<f64>]
     fig
 }
 
+/// Today's date (UTC) as YYYY-MM-DD, from the system clock (Hinnant's days-to-civil
+/// algorithm).
+#[must_use]
+pub fn today_utc() -> String {
+    let secs = std::time::SystemTime::now()
+        .duration_since(std::time::UNIX_EPOCH)
+        .map_or(0, |d| d.as_secs());
+    let z = i64::try_from(secs / 86_400).unwrap_or(0) + 719_468;
+    let era = z.div_euclid(146_097);
+    let doe = z.rem_euclid(146_097);
+    let yoe = (doe - doe / 1460 + doe / 36_524 - doe / 146_096) / 365;
+    let doy = doe - (365 * yoe + yoe / 4 - yoe / 100);
+    let mp = (5 * doy + 2) / 153;
+    let d = doy - (153 * mp + 2) / 5 + 1;
+    let m = if mp < 10 { mp + 3 } else { mp - 9 };
+    let y = yoe + era * 400 + i64::from(m <= 2);
+    format!("{y:04}-{m:02}-{d:02}")
+}
+
 /// The figures of every twin as a Markdown table.
 #[must_use]
 pub fn markdown(adapter: &str, figs: &[Figures], without: &[&str]) -> String {
     let mut s = format!(
-        "# WGSL twins against the CPU\n\nAdapter: {adapter}\n\n\
-         Each value is held to the bound the WGSL accuracy table gives its form (plus the \
-         CPU f32 result's own error); bounds in ULP of the CPU's f32 value.\n\n\
+        "# WGSL twins against the CPU\n\nAdapter: {adapter}\n\nDate: {date} (UTC); \
+         `brdf-gpu-equiv`, rows per kernel: its argument extremes (up to {EXTREME_ROWS}), \
+         {RANDOM_ROWS} random rows and up to {NEAR_END_ROWS} rows with cosines near 0 and 1.\n\n\
+         Each value g is held to |g - c32| <= B + |X - c32|: B the bound the WGSL accuracy \
+         table gives the twin's form at that input, X the form's exact value, c32 the CPU's \
+         f32 result; bounds in ULP of c32.\n\n\
          | kernel | rows | compared | bit-identical | max ULP | bound at max (ULP) | \
          min bound (ULP) | max measured / bound | excluded | outside bound |\n\
-         |---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n"
+         |---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n",
+        date = today_utc()
     );
     for f in figs {
         s += &format!(
@@ -279,6 +307,16 @@ pub fn markdown(adapter: &str, figs: &[Figures], without: &[&str]) -> String {
     for f in figs {
         for (why, n, row) in &f.excluded {
             s += &format!("- `{}`: {n}, {why}: {row:?}\n", f.path);
+        }
+    }
+    s += "\nWhere each kernel came closest to its bound (the row, the GPU's value, the CPU's \
+          f32 value):\n\n";
+    for f in figs {
+        if let Some((row, g, c)) = &f.worst {
+            s += &format!(
+                "- `{}`: {:.3} of the bound at {row:?}: GPU {g:e}, CPU {c:e}\n",
+                f.path, f.max_ratio
+            );
         }
     }
     s += &format!(
