@@ -21,10 +21,12 @@
 //! implementation to contract (fuse) and reassociate: one more rounding per operation. A chain
 //! of `+` and `-` within a function may be summed in any order: each of its additions is
 //! charged in ULP of the sum of its operands' magnitudes, which bounds every partial sum of
-//! every order. A chain of `*` may be multiplied in any order: a row where some order would
-//! overflow or underflow (the product of all operands above 1 beyond the largest `f32`, or of
-//! all below 1 under the smallest normal) is excluded, since an implementation that reorders
-//! it promises nothing there; Mesa's lavapipe does reorder `f * (e * n) * pi` into an overflow. Every
+//! every order. A chain of `*` within a function may be multiplied in any order: a row where
+//! some order would overflow or underflow (the product of all operands above 1 beyond the
+//! largest `f32`, or of all below 1 under the smallest normal while the product is normal) is
+//! excluded, since an implementation that reorders it promises nothing there; Mesa's lavapipe
+//! does reorder `f * (e * n) * pi` into an overflow. Chains are followed within a function only:
+//! a reordering across an inlined call is not modelled (a known gap of this bound). Every
 //! operation also adds 2^-126 (absolute) where its result may be subnormal, since subnormals
 //! may be flushed to zero; a subnormal argument starts with its own magnitude as its error.
 //!

@@ -6,6 +6,7 @@
 //! | [`shaders`] | which kernel each WGSL function twins, signatures against the reference table, the compute shader of a kernel, translation to SPIR-V, GLSL, HLSL, MSL |
 //! | [`bound`] | the error bound the WGSL specification's accuracy table implies, computed from a function's naga IR |
 //! | [`device`] | one compute dispatch through `wgpu` |
+//! | [`contrast`] | GGX D in the crate's stable form and in the textbook form, on the same adapter |
 //! | [`equiv`] | the rows, the comparison with the CPU's `f32`, the per-kernel figures, Markdown and CSV |
 //!
 //! The tests (`cargo test -p brdf-gpu --release`) validate and translate every twin, check
@@ -14,6 +15,7 @@
 //! `brdf-gpu-equiv` runs the same equivalence on any machine and writes the figures.
 
 pub mod bound;
+pub mod contrast;
 pub mod device;
 pub mod equiv;
 pub mod shaders;

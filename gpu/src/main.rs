@@ -59,7 +59,17 @@ fn main() -> ExitCode {
         }
         figs.push(f);
     }
-    let md = markdown(&adapter, &figs, &without);
+    let forms = brdf_gpu::contrast::run(&gpu);
+    for f in &forms {
+        println!(
+            "GGX D near n.h = 1, {:18} identical {:>6.2}%  max {} ULP at (n.h, alpha) = {:?}",
+            f.name,
+            100.0 * f.identical as f64 / f.compared as f64,
+            f.max_ulp,
+            f.worst
+        );
+    }
+    let md = markdown(&adapter, &figs, &without) + &brdf_gpu::contrast::markdown(&forms);
     if let Err(e) = std::fs::create_dir_all(&out)
         .and_then(|()| std::fs::write(out.join("gpu-equivalence.md"), &md))
         .and_then(|()| std::fs::write(out.join("gpu-equivalence.csv"), csv(&figs)))

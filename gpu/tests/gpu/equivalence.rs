@@ -68,3 +68,21 @@ fn a_twin_with_another_formula_is_caught_on_the_cpu() {
     let cpu = cpu_row(t, &mut interp, &row).expect("compared");
     assert!((cpu.form[0].v - cpu.c64[0]).abs() > cpu.form[0].e);
 }
+
+#[test]
+fn the_stable_ggx_d_stays_closer_to_the_cpu_than_the_textbook_form() {
+    // Near n.h = 1 at small alpha the textbook denominator 1 + c^2 (a^2 - 1) cancels; the
+    // twin's (1 - c)(1 + c) + c^2 a^2 does not (brdf_gpu::contrast).
+    let Some(gpu) = gpu() else { return };
+    let [ours, textbook] = brdf_gpu::contrast::run(&gpu);
+    println!(
+        "{}",
+        brdf_gpu::contrast::markdown(&[ours.clone(), textbook.clone()])
+    );
+    assert!(
+        ours.max_ulp < textbook.max_ulp,
+        "ours {} ULP, textbook {} ULP",
+        ours.max_ulp,
+        textbook.max_ulp
+    );
+}
