@@ -49,7 +49,8 @@ pub const COMMON: &str = include_str!("../wgsl/common.wgsl");
 pub const GGX: &str = include_str!("../wgsl/ggx.wgsl");
 
 /// The twins of `brdf::fresnel`'s Schlick family (plain, F90, spherical Gaussian, F82 tint,
-/// RGB forms), F0 and IOR conversions and the dielectric average's fit.
+/// RGB forms), the exact dielectric reflectance (polarized and not), F0 and IOR conversions
+/// and the dielectric average's fit.
 pub const FRESNEL: &str = include_str!("../wgsl/fresnel.wgsl");
 
 /// The twins of `brdf::beckmann`'s D, fast D, Smith's a, Walter's rational Lambda and the
@@ -57,7 +58,7 @@ pub const FRESNEL: &str = include_str!("../wgsl/fresnel.wgsl");
 pub const BECKMANN: &str = include_str!("../wgsl/beckmann.wgsl");
 
 /// The twins of `brdf::cook_torrance`'s half-vector cosines and isotropic GGX lobes from dot
-/// products (constant F, Schlick RGB). Needs [`GGX`] and [`FRESNEL`] before it.
+/// products (constant F, Schlick RGB, exact dielectric). Needs [`GGX`] and [`FRESNEL`] before it.
 pub const COOK_TORRANCE: &str = include_str!("../wgsl/cook_torrance.wgsl");
 
 /// The twins of `brdf::diffuse`'s Lambert, qualitative Oren-Nayar (with its A and B), Burley

@@ -1,7 +1,7 @@
 // brdf: the Cook-Torrance specular assembly, the twins of the Rust module `cook_torrance`
-// (the half-vector cosines and the isotropic GGX lobes from dot products). Needs common.wgsl,
-// ggx.wgsl and fresnel.wgsl. The generic forms over a microfacet model and the Beckmann lobes
-// have no twin yet.
+// (the half-vector cosines and the isotropic GGX lobes from dot products: constant F, Schlick
+// RGB, exact dielectric). Needs common.wgsl, ggx.wgsl and fresnel.wgsl. The generic forms over
+// a microfacet model, the conductor lobes and the Beckmann lobes have no twin yet.
 
 // n.h = s.z / |s| and v.h = |s| / 2 (capped at 1) for s = wo + wi, without forming the half
 // vector (Walter et al. 2007, "Microfacet Models for Refraction through Rough Surfaces",
@@ -47,4 +47,14 @@ fn cook_torrance_ggx_schlick_rgb(
         brdf_cook_torrance_assemble(dv, n_dot_v, n_dot_l, f.y),
         brdf_cook_torrance_assemble(dv, n_dot_v, n_dot_l, f.z),
     );
+}
+
+// Rough dielectric reflection: isotropic GGX with the exact dielectric Fresnel at v.h (clamped
+// to [0, 1]) (Walter et al. 2007; Born and Wolf 1.5.2).
+fn cook_torrance_ggx_dielectric(
+    n_dot_v: f32, n_dot_l: f32, n_dot_h: f32, v_dot_h: f32, alpha: f32, eta: f32,
+) -> f32 {
+    let f = fresnel_dielectric(saturate(v_dot_h), eta);
+    let dv = ggx_d(n_dot_h, alpha) * ggx_v_correlated(n_dot_v, n_dot_l, alpha);
+    return brdf_cook_torrance_assemble(dv, n_dot_v, n_dot_l, f);
 }

@@ -105,3 +105,46 @@ fn fresnel_average_dielectric_fit(eta: f32) -> f32 {
     let below = fma(eta, fma(eta, fma(eta, -0.130607, -0.965241), 0.1014), 0.997118);
     return select(below, above, eta >= 1.0);
 }
+
+// Exact dielectric reflectances (Rs, Rp) for s- and p-polarized light (Fresnel 1823; Born and
+// Wolf, "Principles of Optics", 1.5.2), cos_theta_i in [-1, 1] (negative: from inside, the
+// relative IOR then taken as 1 / eta), eta > 0. In the Rust kernel's cancellation-free form:
+// with a = c (m = eta^2 - 1) from outside and a = eta c (m = 1 - eta^2) from inside,
+// g^2 = a^2 + m, Rs = (m / (a + g)^2)^2 and Rp from x = eta^2 a (resp. eta^2 g), y = g (resp. a)
+// as ((eta^2 - 1) W f / (x + y)^2)^2, W = (eta^2 + 1) c^2 - f, f = 1 (resp. eta^2), so the
+// Brewster zero is W's; 1 and 1 under total internal reflection (g^2 < 0). The Rust kernel's
+// second path for eta beyond [1/256, 256] has no twin: there eta^2 leaves f32's range first
+// (beyond 2^64 or below 2^-64), where WGSL promises nothing.
+fn fresnel_dielectric_polarized(cos_theta_i: f32, eta: f32) -> vec2<f32> {
+    let inside = cos_theta_i < 0.0;
+    let c = min(abs(cos_theta_i), 1.0);
+    let n2 = eta * eta;
+    let n2m1 = n2 - 1.0;
+    let cc = c * c;
+    let n2cc = n2 * cc;
+    let a = select(c, eta * c, inside);
+    let a2 = select(cc, n2cc, inside);
+    let m = select(n2m1, -n2m1, inside);
+    let g2 = a2 + m;
+    let g = sqrt(max(g2, 0.0));
+    // (a + g)^2 as a (a + 2 g) + g^2: a = 0 gives exactly g^2 = m and Rs = 1.
+    let d_perp = a * (a + 2.0 * g) + g2;
+    let f = select(1.0, n2, inside);
+    let w = n2cc + cc - f;
+    let x = n2 * select(a, g, inside);
+    let y = select(g, a, inside);
+    let y2 = select(g2, a2, inside);
+    let d_par = x * (x + 2.0 * y) + y2;
+    let r_perp = select(-m / d_perp, 0.0, d_perp == 0.0);
+    let r_par = select(n2m1 * w * f / d_par, 0.0, d_par == 0.0);
+    let tir = g2 < 0.0;
+    let rs = select(min(r_perp * r_perp, 1.0), 1.0, tir);
+    let rp = select(min(r_par * r_par, 1.0), 1.0, tir);
+    return vec2<f32>(rs, rp);
+}
+
+// The unpolarized dielectric reflectance (Rs + Rp) / 2 (Born and Wolf 1.5.2).
+fn fresnel_dielectric(cos_theta_i: f32, eta: f32) -> f32 {
+    let r = fresnel_dielectric_polarized(cos_theta_i, eta);
+    return 0.5 * (r.x + r.y);
+}
