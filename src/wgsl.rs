@@ -24,8 +24,10 @@
 //! ```
 //!
 //! [`ALL`] is every family in that order. With `wgpu`, pass the concatenation followed by
-//! your own entry points to `device.create_shader_module` as `ShaderSource::Wgsl`; with
-//! `naga_oil` or WESL, register [`COMMON`] and each family as a module of its own.
+//! your own entry points to `device.create_shader_module` as `ShaderSource::Wgsl` (the
+//! repository's README shows it, compiled by the `brdf-gpu` tests). The sources carry no
+//! `#define_import_path` or import lines: for naga_oil or WESL, register the concatenation as
+//! one module of your own.
 //!
 //! # What differs from the Rust kernels
 //! The twins compute in `f32`, rounding every operation: the Rust kernels that round once

@@ -26,6 +26,16 @@ mkdir -p "$out"
   if command -v nvidia-smi >/dev/null; then
     nvidia-smi --query-gpu=name,driver_version --format=csv,noheader || true
   fi
+  ldconfig -p 2>/dev/null | grep -E 'libGLX_nvidia|libnvidia-glcore|libvulkan' || true
+  echo "glibc: $(ldd --version 2>/dev/null | head -1) (the binary needs 2.35 or newer)"
 } | tee "$out/environment.txt"
+set +e
 "$here/bin/brdf-gpu-equiv" --out "$out" 2>&1 | tee "$out/run.log"
-exit "${PIPESTATUS[0]}"
+status=${PIPESTATUS[0]}
+if [ "$status" = 2 ]; then
+  # No adapter: once more with the loader's own diagnostics, for the next attempt.
+  VK_LOADER_DEBUG=error,warn,driver "$here/bin/brdf-gpu-equiv" --out "$out" \
+    > "$out/loader-debug.log" 2>&1
+  tail -n 40 "$out/loader-debug.log"
+fi
+exit "$status"
