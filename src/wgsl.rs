@@ -13,8 +13,8 @@
 //!
 //! # Composing
 //! [`COMMON`] must come first, then each family after the families it calls into
-//! ([`Family::needs`]: [`COOK_TORRANCE`] needs [`GGX`] and [`FRESNEL`], [`MATERIAL`] needs
-//! [`GGX`]). No
+//! ([`Family::needs`]: [`COOK_TORRANCE`] needs [`GGX`] and [`FRESNEL`], [`DIFFUSE`] needs
+//! [`FRESNEL`], [`MATERIAL`] needs [`GGX`]). No
 //! family defines a name another family defines, so any such subset concatenated after
 //! [`COMMON`] is one valid WGSL module:
 //!
@@ -64,11 +64,13 @@ pub const BECKMANN: &str = include_str!("../wgsl/beckmann.wgsl");
 pub const COOK_TORRANCE: &str = include_str!("../wgsl/cook_torrance.wgsl");
 
 /// The twins of `brdf::diffuse`'s Lambert, qualitative Oren-Nayar (with its A and B), Burley
-/// and renormalized Burley lobes.
+/// and renormalized Burley lobes, the diffuse-Fresnel couplings, and the parameter types'
+/// `eval` on local directions (`diffuse_Burley_eval`, ...). Needs [`FRESNEL`] before it.
 pub const DIFFUSE: &str = include_str!("../wgsl/diffuse.wgsl");
 
 /// The twins of `brdf::phong`: classic, modified and normalized Phong, Lambert plus Phong,
-/// Blinn-Phong with exact and approximate normalization, the Blinn-Phong NDF.
+/// Blinn-Phong with exact and approximate normalization, the Blinn-Phong NDF, and the
+/// parameter types' `eval` on local directions (`phong_BlinnPhong_eval`, ...).
 pub const PHONG: &str = include_str!("../wgsl/phong.wgsl");
 
 /// The twins of `brdf::lights`: reflected radiance (radiometric and pi c_light), irradiance,
@@ -135,7 +137,7 @@ pub const FAMILIES: &[Family] = &[
     Family {
         name: "diffuse",
         source: DIFFUSE,
-        needs: &[],
+        needs: &["fresnel"],
     },
     Family {
         name: "phong",

@@ -96,3 +96,77 @@ fn phong_blinn_phong_normalized(
         * brdf_phong_lobe(n_dot_h, exponent);
     return brdf_phong_above_horizon(n_dot_v, n_dot_l, f);
 }
+
+// The parameter types (`phong::ClassicPhong`, ...) on local-frame directions: r.l is wo's
+// mirror about the normal dotted with wi, n.h the half vector's cosine (0 where wo = -wi).
+
+// r.l = wo.z wi.z - (wo.x wi.x + wo.y wi.y).
+fn brdf_phong_r_dot_l(wo_x: f32, wo_y: f32, wo_z: f32, wi_x: f32, wi_y: f32, wi_z: f32) -> f32 {
+    return fma(wo_z, wi_z, -fma(wo_x, wi_x, wo_y * wi_y));
+}
+
+// n.h = (wo + wi).z / |wo + wi|, 0 where wo + wi = 0.
+fn brdf_phong_n_dot_h(wo_x: f32, wo_y: f32, wo_z: f32, wi_x: f32, wi_y: f32, wi_z: f32) -> f32 {
+    let hx = wo_x + wi_x;
+    let hy = wo_y + wi_y;
+    let hz = wo_z + wi_z;
+    let len2 = fma(hx, hx, fma(hy, hy, hz * hz));
+    return select(hz / sqrt(len2), 0.0, len2 == 0.0);
+}
+
+// `phong::ClassicPhong` on local-frame directions.
+fn phong_ClassicPhong_eval(
+    ks: f32, exponent: f32, wo_x: f32, wo_y: f32, wo_z: f32, wi_x: f32, wi_y: f32, wi_z: f32,
+) -> f32 {
+    let r_dot_l = brdf_phong_r_dot_l(wo_x, wo_y, wo_z, wi_x, wi_y, wi_z);
+    return phong_classic(wo_z, wi_z, r_dot_l, ks, exponent);
+}
+
+// `phong::ModifiedPhong` on local-frame directions.
+fn phong_ModifiedPhong_eval(
+    ks: f32, exponent: f32, wo_x: f32, wo_y: f32, wo_z: f32, wi_x: f32, wi_y: f32, wi_z: f32,
+) -> f32 {
+    let r_dot_l = brdf_phong_r_dot_l(wo_x, wo_y, wo_z, wi_x, wi_y, wi_z);
+    return phong_modified(wo_z, wi_z, r_dot_l, ks, exponent);
+}
+
+// `phong::NormalizedPhong` on local-frame directions.
+fn phong_NormalizedPhong_eval(
+    ks: f32, exponent: f32, wo_x: f32, wo_y: f32, wo_z: f32, wi_x: f32, wi_y: f32, wi_z: f32,
+) -> f32 {
+    let r_dot_l = brdf_phong_r_dot_l(wo_x, wo_y, wo_z, wi_x, wi_y, wi_z);
+    return phong_normalized(wo_z, wi_z, r_dot_l, ks, exponent);
+}
+
+// `phong::BlinnPhong` on local-frame directions.
+fn phong_BlinnPhong_eval(
+    ks: f32, exponent: f32, wo_x: f32, wo_y: f32, wo_z: f32, wi_x: f32, wi_y: f32, wi_z: f32,
+) -> f32 {
+    let n_dot_h = brdf_phong_n_dot_h(wo_x, wo_y, wo_z, wi_x, wi_y, wi_z);
+    return phong_blinn_phong(wo_z, wi_z, n_dot_h, ks, exponent);
+}
+
+// `phong::NormalizedBlinnPhong` on local-frame directions.
+fn phong_NormalizedBlinnPhong_eval(
+    ks: f32, exponent: f32, wo_x: f32, wo_y: f32, wo_z: f32, wi_x: f32, wi_y: f32, wi_z: f32,
+) -> f32 {
+    let n_dot_h = brdf_phong_n_dot_h(wo_x, wo_y, wo_z, wi_x, wi_y, wi_z);
+    return phong_blinn_phong_normalized(wo_z, wi_z, n_dot_h, ks, exponent);
+}
+
+// `phong::ApproxNormalizedBlinnPhong` on local-frame directions.
+fn phong_ApproxNormalizedBlinnPhong_eval(
+    ks: f32, exponent: f32, wo_x: f32, wo_y: f32, wo_z: f32, wi_x: f32, wi_y: f32, wi_z: f32,
+) -> f32 {
+    let n_dot_h = brdf_phong_n_dot_h(wo_x, wo_y, wo_z, wi_x, wi_y, wi_z);
+    return phong_blinn_phong_normalized_approx(wo_z, wi_z, n_dot_h, ks, exponent);
+}
+
+// `phong::PhongDiffuseSpecular` on local-frame directions.
+fn phong_PhongDiffuseSpecular_eval(
+    kd: f32, ks: f32, exponent: f32,
+    wo_x: f32, wo_y: f32, wo_z: f32, wi_x: f32, wi_y: f32, wi_z: f32,
+) -> f32 {
+    let r_dot_l = brdf_phong_r_dot_l(wo_x, wo_y, wo_z, wi_x, wi_y, wi_z);
+    return phong_diffuse_specular(wo_z, wi_z, r_dot_l, kd, ks, exponent);
+}
