@@ -77,8 +77,9 @@ pub const PHONG: &str = include_str!("../wgsl/phong.wgsl");
 /// inverse-square, windowed and polynomial falloffs, spot cones.
 pub const LIGHTS: &str = include_str!("../wgsl/lights.wgsl");
 
-/// The twins of `brdf::tonemap`'s sanitize, Reinhard, extended Reinhard and Narkowicz ACES
-/// curves, and of `brdf::color`'s sRGB and Rec.709 transfer, gamma and luminance.
+/// The twins of `brdf::tonemap`'s sanitize, Reinhard (plain, extended, on luminance, extended
+/// on luminance, Jodie) and Narkowicz ACES curves, and of `brdf::color`'s sRGB and Rec.709
+/// transfer, gamma and luminance.
 pub const TONEMAP: &str = include_str!("../wgsl/tonemap.wgsl");
 
 /// The twins of `brdf::material`'s F0 from reflectance and the metallic-roughness BRDF from

@@ -1,9 +1,9 @@
 // brdf: tonemapping curves and display transfer functions, the twins of the Rust modules
-// `tonemap` (sanitize, Reinhard, extended Reinhard, Narkowicz's ACES fit) and `color` (sRGB and
-// Rec.709 transfer, gamma, luminance). Needs common.wgsl. The Rust transfer functions are
-// correctly rounded through f64; these round each operation, and `pow` carries the accuracy
-// WGSL gives exp2(y log2(x)). The exposure curve, Hable, Lottes, Uchimura, ACES Hill, Khronos
-// PBR Neutral and AgX have no twin yet.
+// `tonemap` (sanitize, Reinhard and its extended, luminance and Jodie forms, Narkowicz's ACES
+// fit) and `color` (sRGB and Rec.709 transfer, gamma, luminance). Needs common.wgsl. The Rust
+// transfer functions are correctly rounded through f64; these round each operation, and `pow`
+// carries the accuracy WGSL gives exp2(y log2(x)). The exposure curve, Hable, Lottes, Uchimura,
+// ACES Hill, Khronos PBR Neutral and AgX have no twin yet.
 
 // tonemap::MAX_INPUT: HDR input is clamped to [0, 1e9].
 const BRDF_TONEMAP_MAX_INPUT: f32 = 1e9;
@@ -32,12 +32,58 @@ fn tonemap_reinhard_extended(c: f32, white: f32) -> f32 {
 }
 
 // Narkowicz's fit of the ACES filmic curve, x (2.51 x + 0.03) / (x (2.43 x + 0.59) + 0.14)
-// (Narkowicz 2016, "ACES Filmic Tone Mapping Curve"), clamped to [0, 1].
+// (Narkowicz 2015, "ACES Filmic Tone Mapping Curve"), clamped to [0, 1].
 fn tonemap_aces_narkowicz(c: f32) -> f32 {
     let x = tonemap_sanitize(c);
     let num = fma(2.51, x, 0.03) * x;
     let den = fma(fma(2.43, x, 0.59), x, 0.14);
     return saturate(num / den);
+}
+
+// 1 + L for the sanitized channels, L = 0.2126 r + 0.7152 g + 0.0722 b summed in that order
+// (tonemap's luminance_dw).
+fn brdf_tonemap_one_plus_luminance(r: f32, g: f32, b: f32) -> f32 {
+    return 0.2126 * r + 0.7152 * g + 0.0722 * b + 1.0;
+}
+
+// Reinhard on luminance, each channel c / (1 + L) (Reinhard et al. 2002, eq. 3 applied with
+// the luminance), clamped to [0, 1].
+fn tonemap_reinhard_luminance(c_r: f32, c_g: f32, c_b: f32) -> vec3<f32> {
+    let r = tonemap_sanitize(c_r);
+    let g = tonemap_sanitize(c_g);
+    let b = tonemap_sanitize(c_b);
+    let d = brdf_tonemap_one_plus_luminance(r, g, b);
+    return vec3<f32>(saturate(r / d), saturate(g / d), saturate(b / d));
+}
+
+// Extended Reinhard on luminance, each channel c (1 + L / w^2) / (1 + L) (Reinhard et al.
+// 2002, eq. 4), L / w^2 as (L / w) / w and capped at the largest finite f32.
+fn tonemap_reinhard_extended_luminance(c_r: f32, c_g: f32, c_b: f32, white: f32) -> vec3<f32> {
+    let r = tonemap_sanitize(c_r);
+    let g = tonemap_sanitize(c_g);
+    let b = tonemap_sanitize(c_b);
+    let l = color_luminance(r, g, b);
+    let num = min(1.0 + l / white / white, BRDF_F32_MAX);
+    let den = 1.0 + l;
+    return vec3<f32>(saturate(r * num / den), saturate(g * num / den), saturate(b * num / den));
+}
+
+// One channel of Reinhard-Jodie: c (c d + 1 + c) / (d (1 + c)^2), the blend of per-channel
+// and luminance Reinhard by the per-channel curve, d = 1 + L.
+fn brdf_tonemap_jodie(x: f32, d: f32) -> f32 {
+    let x1 = 1.0 + x;
+    return saturate(x * fma(x, d, x1) / (d * (x1 * x1)));
+}
+
+// Reinhard-Jodie: per-channel Reinhard blended toward luminance Reinhard by the per-channel
+// result, lerp(c / (1 + L), c / (1 + c), c / (1 + c)) (user Jodie on Shadertoy, 2019; both
+// parts from Reinhard et al. 2002), as one fraction of positive terms, clamped to [0, 1].
+fn tonemap_reinhard_jodie(c_r: f32, c_g: f32, c_b: f32) -> vec3<f32> {
+    let r = tonemap_sanitize(c_r);
+    let g = tonemap_sanitize(c_g);
+    let b = tonemap_sanitize(c_b);
+    let d = brdf_tonemap_one_plus_luminance(r, g, b);
+    return vec3<f32>(brdf_tonemap_jodie(r, d), brdf_tonemap_jodie(g, d), brdf_tonemap_jodie(b, d));
 }
 
 // Rec. 709 luminance 0.2126 r + 0.7152 g + 0.0722 b (ITU-R BT.709-6, item 3.2), in the Rust
