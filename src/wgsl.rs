@@ -44,6 +44,10 @@
 /// Include it once, first.
 pub const COMMON: &str = include_str!("../wgsl/common.wgsl");
 
+/// The twins of `brdf::frame`'s local-frame trigonometry (cos, sin and tan of theta, cos and
+/// sin of phi, from a direction's components).
+pub const FRAME: &str = include_str!("../wgsl/frame.wgsl");
+
 /// The twins of `brdf::ggx`'s free functions (D, the fast D, anisotropic D, Lambda, G1, the
 /// height-correlated V and its Hammon and Filament fast forms, Schlick's G1, k and V) and of
 /// `ggx::Ggx`'s methods on local directions (`ggx_Ggx_d`, `ggx_Ggx_lambda`, ..., taking the
@@ -90,6 +94,7 @@ pub const MATERIAL: &str = include_str!("../wgsl/material.wgsl");
 /// every twin.
 pub const ALL: &str = concat!(
     include_str!("../wgsl/common.wgsl"),
+    include_str!("../wgsl/frame.wgsl"),
     include_str!("../wgsl/ggx.wgsl"),
     include_str!("../wgsl/fresnel.wgsl"),
     include_str!("../wgsl/beckmann.wgsl"),
@@ -115,6 +120,11 @@ pub struct Family {
 
 /// Every family, in the order of [`ALL`].
 pub const FAMILIES: &[Family] = &[
+    Family {
+        name: "frame",
+        source: FRAME,
+        needs: &[],
+    },
     Family {
         name: "ggx",
         source: GGX,
