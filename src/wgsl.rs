@@ -45,7 +45,7 @@
 pub const COMMON: &str = include_str!("../wgsl/common.wgsl");
 
 /// The twins of `brdf::frame`'s local-frame trigonometry (cos, sin and tan of theta, cos and
-/// sin of phi, from a direction's components).
+/// sin of phi, from a direction's components; the direction of spherical angles).
 pub const FRAME: &str = include_str!("../wgsl/frame.wgsl");
 
 /// The twins of `brdf::ggx`'s free functions (D, the fast D, anisotropic D, Lambda, G1, the
@@ -78,7 +78,8 @@ pub const DIFFUSE: &str = include_str!("../wgsl/diffuse.wgsl");
 pub const PHONG: &str = include_str!("../wgsl/phong.wgsl");
 
 /// The twins of `brdf::lights`: reflected radiance (radiometric and pi c_light), irradiance,
-/// inverse-square, windowed and polynomial falloffs, spot cones.
+/// inverse-square, windowed and polynomial falloffs, spot cones (from cosines, and
+/// `lights::SpotCone` from its angles).
 pub const LIGHTS: &str = include_str!("../wgsl/lights.wgsl");
 
 /// The twins of `brdf::tonemap`'s sanitize, Reinhard (plain, extended, on luminance, extended

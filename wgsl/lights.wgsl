@@ -80,3 +80,10 @@ fn lights_spot_cone(cos_angle: f32, cos_outer: f32, cos_inner: f32) -> f32 {
     let step = select(0.0, 1.0, cos_angle >= cos_outer);
     return select(t * t, step, hard);
 }
+
+// `lights::SpotCone` from its constructor's angles (inner <= outer in [0, pi]): cos_outer is
+// min(cos(outer), cos(inner)), so that rounding cannot order them the wrong way.
+fn lights_SpotCone_eval(inner: f32, outer: f32, cos_angle: f32) -> f32 {
+    let cos_inner = cos(inner);
+    return lights_spot_cone(cos_angle, min(cos(outer), cos_inner), cos_inner);
+}

@@ -14,6 +14,7 @@
 //! | `exp`, `exp2` | 3 + 2 \|x\| + 0.5 | endpoints |
 //! | `log`, `log2` | absolute 2^-21 for x in [0.5, 2], else 3 + 0.5 | endpoints |
 //! | `pow(x, y)` | `exp2(y * log2(x))`, each step as above | |
+//! | `sin`, `cos` | absolute 2^-11 for x in [-pi, pi] (no promise outside) + 0.5 | Lipschitz 1 |
 //! | `fma(a, b, c)` | `a * b + c`, two roundings as above | |
 //! | `min`, `max`, `clamp`, `saturate`, `abs`, negation | none (exact) | exact interval arithmetic |
 //!
@@ -552,6 +553,18 @@ impl<'m> Interp<'m> {
                 let p = mul(y2(), l);
                 let big = p.v.abs() + p.e;
                 self.monotone(p, f64::exp2, 3.0 + 2.0 * big + EXTRA)
+            }
+            M::Sin | M::Cos => {
+                // Absolute 2^-11 inside [-pi, pi], nothing promised outside; both are
+                // 1-Lipschitz, so the argument's error passes through at most unchanged.
+                if x.v.abs() + x.e > std::f64::consts::PI {
+                    self.exclude("sin or cos of an argument that may leave [-pi, pi]");
+                }
+                let v = if fun == M::Sin { x.v.sin() } else { x.v.cos() };
+                Num {
+                    v,
+                    e: x.e + f64::powi(2.0, -11) + allow(v, x.e, EXTRA),
+                }
             }
             other => panic!("builtin {other:?} is not modelled"),
         }
