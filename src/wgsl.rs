@@ -91,6 +91,10 @@ pub const TONEMAP: &str = include_str!("../wgsl/tonemap.wgsl");
 /// dot products (its three diffuse couplings, and glTF's composition). Needs [`GGX`] before it.
 pub const MATERIAL: &str = include_str!("../wgsl/material.wgsl");
 
+/// The twins of `brdf::ibl::dfg`'s per-pixel terms: the analytic split-sum fits (Karis mobile,
+/// Lazarov, Narkowicz's two), the split-sum specular, the roughness-mip mappings.
+pub const IBL: &str = include_str!("../wgsl/ibl.wgsl");
+
 /// [`COMMON`] followed by every family, each after the families it needs: one module defining
 /// every twin.
 pub const ALL: &str = concat!(
@@ -105,6 +109,7 @@ pub const ALL: &str = concat!(
     include_str!("../wgsl/lights.wgsl"),
     include_str!("../wgsl/tonemap.wgsl"),
     include_str!("../wgsl/material.wgsl"),
+    include_str!("../wgsl/ibl.wgsl"),
 );
 
 /// One family's WGSL, with the families it calls into.
@@ -170,5 +175,10 @@ pub const FAMILIES: &[Family] = &[
         name: "material",
         source: MATERIAL,
         needs: &["ggx"],
+    },
+    Family {
+        name: "ibl",
+        source: IBL,
+        needs: &[],
     },
 ];
