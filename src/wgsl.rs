@@ -95,6 +95,9 @@ pub const MATERIAL: &str = include_str!("../wgsl/material.wgsl");
 /// Lazarov, Narkowicz's two), the split-sum specular, the roughness-mip mappings.
 pub const IBL: &str = include_str!("../wgsl/ibl.wgsl");
 
+/// The twins of `brdf::sampling`'s cosine-hemisphere pdf and reflection Jacobian.
+pub const SAMPLING: &str = include_str!("../wgsl/sampling.wgsl");
+
 /// [`COMMON`] followed by every family, each after the families it needs: one module defining
 /// every twin.
 pub const ALL: &str = concat!(
@@ -110,6 +113,7 @@ pub const ALL: &str = concat!(
     include_str!("../wgsl/tonemap.wgsl"),
     include_str!("../wgsl/material.wgsl"),
     include_str!("../wgsl/ibl.wgsl"),
+    include_str!("../wgsl/sampling.wgsl"),
 );
 
 /// One family's WGSL, with the families it calls into.
@@ -179,6 +183,11 @@ pub const FAMILIES: &[Family] = &[
     Family {
         name: "ibl",
         source: IBL,
+        needs: &[],
+    },
+    Family {
+        name: "sampling",
+        source: SAMPLING,
         needs: &[],
     },
 ];
