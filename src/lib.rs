@@ -56,6 +56,7 @@
 //! | [`frame`] | orthonormal basis from a normal, local-frame `cos_theta`/`tan2_theta`/`cos_phi` | always |
 //! | [`shading`] | a shading point's [`Cosines`] (n.v, n.l, n.h, v.h) and world-to-local [`ShadingPoint`]; the crate's one argument order | always |
 //! | [`error`] | [`ParamError`], returned by parameter constructors | always |
+//! | `wgsl` | the WGSL twins of the kernels as source text: `COMMON`, one constant per family, `ALL` | `wgsl` |
 //! | [`batch`] | any kernel over structure-of-arrays slices, 8 `f32` / 4 `f64` at a time; over all cores with `par_run` | always; `par_run` with `rayon` (needs `std`) |
 //! | `fresnel` | Schlick (+F90, SG), exact dielectric and polarized, conductor, F82 tint | `fresnel` |
 //! | `microfacet` | the `Microfacet` trait (D, Lambda, G1, G2) shared by the NDFs | `microfacet` |
@@ -134,6 +135,8 @@ pub mod frame;
 pub mod real;
 pub mod shading;
 pub mod vec3;
+#[cfg(feature = "wgsl")]
+pub mod wgsl;
 
 #[cfg(feature = "beckmann")]
 pub mod beckmann;

@@ -1,0 +1,690 @@
+//! The error bound WGSL allows a function, derived from the function's own IR.
+//!
+//! [`Interp`] runs a naga function in `f64` on one row of `f32` arguments and carries, next
+//! to each value, a bound on how far the `f32` value an implementation computes may lie from
+//! it. Each operation adds the allowance the W3C WGSL specification's accuracy table gives it
+//! (section "Floating Point Accuracy") to the errors it inherits from its operands:
+//!
+//! | operation | own allowance (units of the result's ULP, `f32`) | inherited |
+//! |---|---|---|
+//! | `+`, `-`, `*` | 0.5 (correctly rounded) + 0.5 | exact interval arithmetic |
+//! | `x / y` | 2.5 (for \|y\| in [2^-126, 2^126], else no promise) + 0.5 | exact |
+//! | `inverseSqrt` | 2 + 0.5 | endpoints (monotone) |
+//! | `sqrt` | 1 / `inverseSqrt`: 2 ULP relative on the root is at most 4 ULP of it, the division 2.5, + 0.5 | endpoints |
+//! | `exp`, `exp2` | 3 + 2 \|x\| + 0.5 | endpoints |
+//! | `log`, `log2` | absolute 2^-21 for x in [0.5, 2], else 3 + 0.5 | endpoints |
+//! | `pow(x, y)` | `exp2(y * log2(x))`, each step as above | |
+//! | `sin`, `cos` | absolute 2^-11 for x in [-pi, pi] (no promise outside) + 0.5 | Lipschitz 1 |
+//! | `fma(a, b, c)` | `a * b + c`, two roundings as above | |
+//! | `min`, `max`, `clamp`, `saturate`, `abs`, negation | none (exact) | exact interval arithmetic |
+//!
+//! The extra half ULP on every operation pays for the freedom the specification gives an
+//! implementation to contract (fuse) and reassociate: one more rounding per operation. A chain
+//! of `+` and `-` within a function may be summed in any order: each of its additions is
+//! charged in ULP of the sum of its operands' magnitudes, which bounds every partial sum of
+//! every order. A chain of `*` within a function may be multiplied in any order: a row where
+//! some order would overflow or underflow (the product of all operands above 1 beyond the
+//! largest `f32`, or of all below 1 under the smallest normal while the product is normal) is
+//! excluded, since an implementation that reorders it promises nothing there; Mesa's lavapipe
+//! does reorder `f * (e * n) * pi` into an overflow. Chains are followed within a function only:
+//! a reordering across an inlined call is not modelled (a known gap of this bound). Every
+//! operation also adds 2^-126 (absolute) where its result may be subnormal, since subnormals
+//! may be flushed to zero; a subnormal argument starts with its own magnitude as its error.
+//!
+//! A comparison whose operands lie within their errors of each other may go either way on a
+//! GPU: a `select` on it takes the union of both operands' intervals. Where WGSL promises
+//! nothing at all (a value beyond the largest finite `f32`, a divisor within its error of 0 or
+//! outside [2^-126, 2^126], the logarithm or square root of a value that may be negative), the
+//! row is excluded with the reason, listed and counted, not compared.
+
+use naga::{
+    BinaryOperator, Block, Expression, Function, Handle, Literal, MathFunction, Module, Statement,
+    UnaryOperator,
+};
+
+/// f32's smallest normal, 2^-126.
+const TINY: f64 = 1.175_494_350_822_287_5e-38;
+/// f32's largest finite value.
+const MAX32: f64 = 3.402_823_466_385_288_6e38;
+/// The half ULP each operation is charged for a possible contraction or reordering.
+const EXTRA: f64 = 0.5;
+
+/// A value and a bound on the distance of the `f32` value computed for it by any conforming
+/// implementation: the computed value lies in [v - e, v + e].
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Num {
+    /// The value of the form, evaluated in `f64` (exact to about 2^-50 relative).
+    pub v: f64,
+    /// The bound on the error of the `f32` evaluation.
+    pub e: f64,
+}
+
+impl Num {
+    /// `f(a, b)` for a function monotone in both arguments (`min`, `max`): its exact interval
+    /// from the operands' intervals (no rounding: WGSL's min and max are exact).
+    fn hull(a: Num, b: Num, f: fn(f64, f64) -> f64) -> Num {
+        let v = f(a.v, b.v);
+        let lo = f(a.v - a.e, b.v - b.e);
+        let hi = f(a.v + a.e, b.v + b.e);
+        Num {
+            v,
+            e: (v - lo).max(hi - v),
+        }
+    }
+}
+
+/// A value of the interpreted WGSL.
+#[derive(Clone, Debug)]
+enum Val {
+    Num(Num),
+    /// A boolean, and whether every conforming implementation computes the same one.
+    Bool {
+        v: bool,
+        stable: bool,
+    },
+    Vec(Vec<Num>),
+}
+
+/// The ULP of `f32` at magnitude `x` (2^-149 below the normal range).
+#[must_use]
+pub fn ulp32(x: f64) -> f64 {
+    let a = x.abs();
+    if a < TINY {
+        return f64::from(f32::from_bits(1));
+    }
+    #[allow(clippy::cast_possible_wrap, clippy::cast_possible_truncation)]
+    let exp = ((a.to_bits() >> 52) & 0x7ff) as i32 - 1023;
+    f64::powi(2.0, exp - 23)
+}
+
+/// `ulps` ULP of a result near `v` (inherited error `e`), plus 2^-126 where it may be
+/// subnormal and flushed, plus the `f64` evaluation's own rounding.
+fn allow(v: f64, e: f64, ulps: f64) -> f64 {
+    let hi = v.abs() + e;
+    // An exact zero from exact operands (0 x, x - x) is exact in every rounding mode.
+    if hi == 0.0 {
+        return 0.0;
+    }
+    let flush = if v.abs() - e < TINY && hi > 0.0 {
+        TINY
+    } else {
+        0.0
+    };
+    ulps * ulp32(hi) + flush + hi * f64::powi(2.0, -50)
+}
+
+/// Why a row is not compared.
+pub type Excluded = &'static str;
+
+/// The interpreter of one module.
+pub struct Interp<'m> {
+    module: &'m Module,
+    /// The first reason the row at hand left WGSL's promises, if it did.
+    excluded: Option<Excluded>,
+}
+
+impl<'m> Interp<'m> {
+    /// An interpreter of `module`'s functions.
+    #[must_use]
+    pub fn new(module: &'m Module) -> Self {
+        Self {
+            module,
+            excluded: None,
+        }
+    }
+
+    /// Runs the function `name` on `args` (each an `f32`, given as `f64`): its outputs
+    /// (components of a vector result in order) with their bounds, or why the row is
+    /// excluded.
+    ///
+    /// # Errors
+    /// The reason WGSL promises nothing for this row.
+    ///
+    /// # Panics
+    /// If the module has no function `name`, or the function uses IR this interpreter does
+    /// not model (loops, variables, unlisted builtins): the twins are written without them.
+    pub fn run(&mut self, name: &str, args: &[f64]) -> Result<Vec<Num>, Excluded> {
+        let (h, _) = self
+            .module
+            .functions
+            .iter()
+            .find(|(_, f)| f.name.as_deref() == Some(name))
+            .unwrap_or_else(|| panic!("no WGSL function {name}"));
+        self.excluded = None;
+        let args: Vec<Val> = args
+            .iter()
+            .map(|&x| {
+                // A subnormal argument may be flushed to zero.
+                let e = if x != 0.0 && x.abs() < TINY {
+                    x.abs()
+                } else {
+                    0.0
+                };
+                Val::Num(Num { v: x, e })
+            })
+            .collect();
+        let out = self.call(h, args);
+        if let Some(why) = self.excluded {
+            return Err(why);
+        }
+        Ok(match out {
+            Val::Num(n) => vec![n],
+            Val::Vec(v) => v,
+            Val::Bool { .. } => panic!("{name} returns a boolean"),
+        })
+    }
+
+    fn exclude(&mut self, why: Excluded) {
+        if self.excluded.is_none() {
+            self.excluded = Some(why);
+        }
+    }
+
+    fn call(&mut self, h: Handle<Function>, args: Vec<Val>) -> Val {
+        let f = &self.module.functions[h];
+        let mut frame = Frame {
+            f,
+            args,
+            memo: vec![None; f.expressions.len()],
+        };
+        self.block(&mut frame, &f.body)
+            .unwrap_or_else(|| panic!("{:?} returns nothing", f.name))
+    }
+
+    fn block(&mut self, fr: &mut Frame<'m>, b: &'m Block) -> Option<Val> {
+        for s in b {
+            match s {
+                Statement::Emit(_) => {}
+                Statement::Block(inner) => {
+                    if let Some(v) = self.block(fr, inner) {
+                        return Some(v);
+                    }
+                }
+                Statement::Call {
+                    function,
+                    arguments,
+                    result,
+                } => {
+                    let args = arguments.iter().map(|&a| self.expr(fr, a)).collect();
+                    let v = self.call(*function, args);
+                    if let Some(r) = result {
+                        fr.memo[r.index()] = Some(v);
+                    }
+                }
+                Statement::Return { value } => {
+                    return value.map(|v| self.expr(fr, v));
+                }
+                other => panic!(
+                    "{:?}: statement {other:?} is not modelled (the twins use let and select)",
+                    fr.f.name
+                ),
+            }
+        }
+        None
+    }
+
+    fn num(&mut self, fr: &mut Frame<'m>, h: Handle<Expression>) -> Num {
+        match self.expr(fr, h) {
+            Val::Num(n) => n,
+            other => panic!("{:?}: expected a number, found {other:?}", fr.f.name),
+        }
+    }
+
+    fn literal(l: &Literal) -> Val {
+        let n = |v: f64| Val::Num(Num { v, e: 0.0 });
+        match *l {
+            Literal::F32(x) => n(f64::from(x)),
+            #[allow(clippy::cast_possible_truncation)]
+            Literal::AbstractFloat(x) | Literal::F64(x) => n(f64::from(x as f32)),
+            Literal::U32(x) => n(f64::from(x)),
+            Literal::I32(x) => n(f64::from(x)),
+            #[allow(clippy::cast_precision_loss)]
+            Literal::AbstractInt(x) => n(x as f64),
+            Literal::Bool(v) => Val::Bool { v, stable: true },
+            ref other => panic!("literal {other:?} is not modelled"),
+        }
+    }
+
+    fn global(&self, h: Handle<Expression>) -> Val {
+        match &self.module.global_expressions[h] {
+            Expression::Literal(l) => Self::literal(l),
+            Expression::Constant(c) => self.global(self.module.constants[*c].init),
+            other => panic!("constant expression {other:?} is not modelled"),
+        }
+    }
+
+    #[allow(clippy::too_many_lines)]
+    fn expr(&mut self, fr: &mut Frame<'m>, h: Handle<Expression>) -> Val {
+        if let Some(v) = &fr.memo[h.index()] {
+            return v.clone();
+        }
+        let v = match &fr.f.expressions[h] {
+            Expression::Literal(l) => Self::literal(l),
+            Expression::Constant(c) => self.global(self.module.constants[*c].init),
+            Expression::FunctionArgument(i) => fr.args[*i as usize].clone(),
+            Expression::Compose { components, .. } => {
+                let mut out = Vec::new();
+                for &c in components {
+                    match self.expr(fr, c) {
+                        Val::Num(n) => out.push(n),
+                        Val::Vec(v) => out.extend(v),
+                        Val::Bool { .. } => panic!("boolean vectors are not modelled"),
+                    }
+                }
+                Val::Vec(out)
+            }
+            Expression::Splat { size, value } => {
+                let n = self.num(fr, *value);
+                Val::Vec(vec![n; *size as usize])
+            }
+            Expression::AccessIndex { base, index } => match self.expr(fr, *base) {
+                Val::Vec(v) => Val::Num(v[*index as usize]),
+                other => panic!("index into {other:?}"),
+            },
+            Expression::Unary { op, expr } => match (op, self.expr(fr, *expr)) {
+                (UnaryOperator::Negate, Val::Num(n)) => Val::Num(Num { v: -n.v, e: n.e }),
+                (UnaryOperator::LogicalNot, Val::Bool { v, stable }) => Val::Bool { v: !v, stable },
+                (op, x) => panic!("unary {op:?} on {x:?} is not modelled"),
+            },
+            Expression::Binary { op, left, right } => {
+                let (a, b) = (self.expr(fr, *left), self.expr(fr, *right));
+                match (*op, &a, &b) {
+                    (BinaryOperator::Add | BinaryOperator::Subtract, Val::Num(x), Val::Num(y)) => {
+                        let y = if *op == BinaryOperator::Add {
+                            *y
+                        } else {
+                            Num { v: -y.v, e: y.e }
+                        };
+                        let span = self.sum_span(fr, h);
+                        Val::Num(add_in(*x, y, span))
+                    }
+                    (BinaryOperator::Multiply, Val::Num(x), Val::Num(y)) => {
+                        let p = mul(*x, *y);
+                        self.check_product_chain(fr, h, p);
+                        Val::Num(p)
+                    }
+                    _ => self.binary(*op, a, b),
+                }
+            }
+            Expression::Select {
+                condition,
+                accept,
+                reject,
+            } => {
+                let Val::Bool { v, stable } = self.expr(fr, *condition) else {
+                    panic!("select on a non-boolean")
+                };
+                // Only the chosen operand's promises matter where the choice is certain.
+                let (chosen, other) = if v {
+                    (*accept, *reject)
+                } else {
+                    (*reject, *accept)
+                };
+                let c = self.num(fr, chosen);
+                if stable {
+                    Val::Num(c)
+                } else {
+                    let o = self.num(fr, other);
+                    Val::Num(Num {
+                        v: c.v,
+                        e: c.e.max((o.v - c.v).abs() + o.e),
+                    })
+                }
+            }
+            Expression::Math {
+                fun,
+                arg,
+                arg1,
+                arg2,
+                ..
+            } => {
+                let x = self.num(fr, *arg);
+                let y = arg1.map(|a| self.num(fr, a));
+                let z = arg2.map(|a| self.num(fr, a));
+                Val::Num(self.math(*fun, x, y, z))
+            }
+            other => panic!("{:?}: expression {other:?} is not modelled", fr.f.name),
+        };
+        // NaN fails the comparison too.
+        let fits = |n: &Num| n.v.abs() + n.e <= MAX32;
+        if let Val::Num(n) = &v
+            && !fits(n)
+        {
+            self.exclude("a value may exceed the largest finite f32 (or is NaN)");
+        }
+        fr.memo[h.index()] = Some(v.clone());
+        v
+    }
+
+    fn binary(&mut self, op: BinaryOperator, a: Val, b: Val) -> Val {
+        use BinaryOperator as B;
+        match (a, b) {
+            (Val::Num(a), Val::Num(b)) => match op {
+                B::Add => Val::Num(add(a, b)),
+                B::Subtract => Val::Num(add(a, Num { v: -b.v, e: b.e })),
+                B::Multiply => Val::Num(mul(a, b)),
+                B::Divide => Val::Num(self.div(a, b)),
+                B::Less | B::LessEqual | B::Greater | B::GreaterEqual | B::Equal | B::NotEqual => {
+                    let v = match op {
+                        B::Less => a.v < b.v,
+                        B::LessEqual => a.v <= b.v,
+                        B::Greater => a.v > b.v,
+                        B::GreaterEqual => a.v >= b.v,
+                        B::Equal => a.v == b.v,
+                        _ => a.v != b.v,
+                    };
+                    // Certain where the intervals cannot touch (or both values are exact).
+                    let gap = (a.v - b.v).abs();
+                    let err = a.e + b.e;
+                    Val::Bool {
+                        v,
+                        stable: err == 0.0 || gap > err,
+                    }
+                }
+                other => panic!("binary {other:?} on numbers is not modelled"),
+            },
+            (Val::Bool { v: x, stable: sx }, Val::Bool { v: y, stable: sy }) => match op {
+                // Certain where both are, or where one certain operand decides alone.
+                B::LogicalAnd | B::And => {
+                    let decided = [(sx, x), (sy, y)].contains(&(true, false));
+                    Val::Bool {
+                        v: x && y,
+                        stable: (sx && sy) || decided,
+                    }
+                }
+                B::LogicalOr | B::InclusiveOr => {
+                    let decided = [(sx, x), (sy, y)].contains(&(true, true));
+                    Val::Bool {
+                        v: x || y,
+                        stable: (sx && sy) || decided,
+                    }
+                }
+                other => panic!("binary {other:?} on booleans is not modelled"),
+            },
+            (Val::Vec(a), Val::Vec(b)) => Val::Vec(
+                a.iter()
+                    .zip(&b)
+                    .map(|(&x, &y)| match self.binary(op, Val::Num(x), Val::Num(y)) {
+                        Val::Num(n) => n,
+                        _ => panic!("vector comparison is not modelled"),
+                    })
+                    .collect(),
+            ),
+            (Val::Vec(a), Val::Num(s)) | (Val::Num(s), Val::Vec(a)) => Val::Vec(
+                a.iter()
+                    .map(|&x| match self.binary(op, Val::Num(x), Val::Num(s)) {
+                        Val::Num(n) => n,
+                        _ => panic!("vector comparison is not modelled"),
+                    })
+                    .collect(),
+            ),
+            (a, b) => panic!("binary {op:?} on {a:?} and {b:?} is not modelled"),
+        }
+    }
+
+    /// The leaves of the chain of `+` and `-` (or of `*`) that `h` heads, within its function:
+    /// the operands an implementation may reorder.
+    fn chain_leaves(
+        fr: &Frame<'m>,
+        h: Handle<Expression>,
+        products: bool,
+        out: &mut Vec<Handle<Expression>>,
+    ) {
+        use BinaryOperator as B;
+        match &fr.f.expressions[h] {
+            Expression::Binary {
+                op: B::Multiply,
+                left,
+                right,
+            } if products => {
+                Self::chain_leaves(fr, *left, products, out);
+                Self::chain_leaves(fr, *right, products, out);
+            }
+            Expression::Binary {
+                op: B::Add | B::Subtract,
+                left,
+                right,
+            } if !products => {
+                Self::chain_leaves(fr, *left, products, out);
+                Self::chain_leaves(fr, *right, products, out);
+            }
+            _ => out.push(h),
+        }
+    }
+
+    /// The sum of the magnitudes (with their errors) of the leaves of the sum `h` heads: no
+    /// partial sum of any reordering of the chain exceeds it, so each addition's rounding is
+    /// charged in ULP of it.
+    fn sum_span(&mut self, fr: &mut Frame<'m>, h: Handle<Expression>) -> f64 {
+        let mut leaves = Vec::new();
+        Self::chain_leaves(fr, h, false, &mut leaves);
+        leaves
+            .into_iter()
+            .map(|l| match self.expr(fr, l) {
+                Val::Num(n) => n.v.abs() + n.e,
+                _ => 0.0,
+            })
+            .sum()
+    }
+
+    /// Excludes the row where some reordering of the chain of products `h` heads (whose
+    /// value is `p`) would overflow (the largest partial product: all leaves above 1), or
+    /// underflow (the smallest: all leaves below 1) while `p` is certainly a normal number.
+    /// Where `p` may be 0 or subnormal, a partial product flushed to 0 stays within its
+    /// bound.
+    fn check_product_chain(&mut self, fr: &mut Frame<'m>, h: Handle<Expression>, p: Num) {
+        let mut leaves = Vec::new();
+        Self::chain_leaves(fr, h, true, &mut leaves);
+        let (mut big, mut small) = (1.0f64, 1.0f64);
+        for l in leaves {
+            if let Val::Num(n) = self.expr(fr, l) {
+                let (lo, hi) = ((n.v.abs() - n.e).max(0.0), n.v.abs() + n.e);
+                big *= hi.max(1.0);
+                small *= lo.min(1.0);
+            }
+        }
+        if big > MAX32 {
+            self.exclude("a reordered product may overflow");
+        } else if small < TINY && p.v.abs() - p.e >= TINY {
+            self.exclude("a reordered product may underflow");
+        }
+    }
+
+    fn div(&mut self, a: Num, b: Num) -> Num {
+        let m = b.v.abs();
+        if m <= b.e {
+            self.exclude("a divisor may be 0");
+            return Num {
+                v: a.v / b.v,
+                e: 0.0,
+            };
+        }
+        if m - b.e < TINY || m + b.e > f64::powi(2.0, 126) {
+            self.exclude("a divisor may leave [2^-126, 2^126], where x / y has no accuracy");
+        }
+        let v = a.v / b.v;
+        let e = (a.v.abs() * b.e + m * a.e) / (m * (m - b.e));
+        Num {
+            v,
+            e: e + allow(v, e, 2.5 + EXTRA),
+        }
+    }
+
+    #[allow(clippy::many_single_char_names)]
+    fn math(&mut self, fun: MathFunction, x: Num, y: Option<Num>, z: Option<Num>) -> Num {
+        use MathFunction as M;
+        let y2 = || y.expect("a second argument");
+        match fun {
+            M::Abs => Num {
+                v: x.v.abs(),
+                e: x.e,
+            },
+            M::Min => Num::hull(x, y2(), f64::min),
+            M::Max => Num::hull(x, y2(), f64::max),
+            M::Clamp => {
+                let (lo, hi) = (y2(), z.expect("clamp's high end"));
+                Num::hull(Num::hull(x, lo, f64::max), hi, f64::min)
+            }
+            M::Saturate => {
+                let (zero, one) = (Num { v: 0.0, e: 0.0 }, Num { v: 1.0, e: 0.0 });
+                Num::hull(Num::hull(x, zero, f64::max), one, f64::min)
+            }
+            M::Fma => add(mul(x, y2()), z.expect("fma's addend")),
+            M::Sqrt => self.sqrt(x),
+            M::InverseSqrt => {
+                if x.v - x.e <= 0.0 {
+                    self.exclude("inverseSqrt of a value that may be <= 0");
+                    return Num { v: 0.0, e: 0.0 };
+                }
+                self.monotone(x, |t| 1.0 / t.sqrt(), 2.0 + EXTRA)
+            }
+            M::Exp | M::Exp2 => {
+                let f = if fun == M::Exp { f64::exp } else { f64::exp2 };
+                let big = x.v.abs() + x.e;
+                self.monotone(x, f, 3.0 + 2.0 * big + EXTRA)
+            }
+            M::Log | M::Log2 => {
+                let f = if fun == M::Log { f64::ln } else { f64::log2 };
+                self.log(x, f)
+            }
+            M::Pow => {
+                // Inherited from exp2(y * log2(x)).
+                let l = self.log(x, f64::log2);
+                let p = mul(y2(), l);
+                let big = p.v.abs() + p.e;
+                self.monotone(p, f64::exp2, 3.0 + 2.0 * big + EXTRA)
+            }
+            M::Sin | M::Cos => {
+                // Absolute 2^-11 inside [-pi, pi], nothing promised outside; both are
+                // 1-Lipschitz, so the argument's error passes through at most unchanged.
+                if x.v.abs() + x.e > std::f64::consts::PI {
+                    self.exclude("sin or cos of an argument that may leave [-pi, pi]");
+                }
+                let v = if fun == M::Sin { x.v.sin() } else { x.v.cos() };
+                Num {
+                    v,
+                    e: x.e + f64::powi(2.0, -11) + allow(v, x.e, EXTRA),
+                }
+            }
+            other => panic!("builtin {other:?} is not modelled"),
+        }
+    }
+
+    /// A monotone function of x: the inherited error from the interval's ends, plus its own
+    /// allowance in ULP.
+    fn monotone(&mut self, x: Num, f: impl Fn(f64) -> f64, ulps: f64) -> Num {
+        let v = f(x.v);
+        let (a, b) = (f(x.v - x.e), f(x.v + x.e));
+        let e = (a - v).abs().max((b - v).abs());
+        if !e.is_finite() {
+            self.exclude("a builtin's argument interval leaves its domain");
+        }
+        Num {
+            v,
+            e: e + allow(v, e, ulps),
+        }
+    }
+
+    fn log(&mut self, x: Num, f: fn(f64) -> f64) -> Num {
+        if x.v - x.e <= 0.0 {
+            self.exclude("log of a value that may be <= 0");
+            return Num { v: 0.0, e: 0.0 };
+        }
+        let inside = x.v - x.e <= 2.0 && x.v + x.e >= 0.5;
+        let outside = x.v - x.e < 0.5 || x.v + x.e > 2.0;
+        let r = self.monotone(x, f, if outside { 3.0 + EXTRA } else { 0.0 });
+        let abs = if inside { f64::powi(2.0, -21) } else { 0.0 };
+        Num {
+            v: r.v,
+            e: r.e + abs,
+        }
+    }
+
+    /// sqrt(x) as 1 / inverseSqrt(x): 2 ULP on the inverse root is a relative 2^-22, which
+    /// the reciprocal keeps, at most 4 ULP of the root; then the division's 2.5 ULP and the
+    /// extra half. At x = 0 the result's interval is [0, its ULP allowance].
+    fn sqrt(&mut self, x: Num) -> Num {
+        if x.v < 0.0 {
+            self.exclude("sqrt of a negative value");
+            return Num { v: 0.0, e: 0.0 };
+        }
+        let v = x.v.sqrt();
+        let lo = (x.v - x.e).max(0.0).sqrt();
+        let hi = (x.v + x.e).sqrt();
+        let e = (v - lo).max(hi - v);
+        Num {
+            v,
+            e: e + allow(v, e, 4.0 + 2.5 + EXTRA),
+        }
+    }
+}
+
+/// The interpreter's state in one call.
+struct Frame<'m> {
+    f: &'m Function,
+    args: Vec<Val>,
+    memo: Vec<Option<Val>>,
+}
+
+fn add(a: Num, b: Num) -> Num {
+    add_in(a, b, 0.0)
+}
+
+/// a + b, its rounding charged in ULP of the larger of the result and `span` (the magnitude
+/// of the sum's chain, which bounds every partial sum of a reordering).
+fn add_in(a: Num, b: Num, span: f64) -> Num {
+    let v = a.v + b.v;
+    let e = a.e + b.e;
+    let own = allow(v, e, 0.5 + EXTRA);
+    let reordered = (0.5 + EXTRA) * ulp32(span);
+    Num {
+        v,
+        e: e + own.max(reordered),
+    }
+}
+
+fn mul(a: Num, b: Num) -> Num {
+    let v = a.v * b.v;
+    let e = a.v.abs() * b.e + b.v.abs() * a.e + a.e * b.e;
+    Num {
+        v,
+        e: e + allow(v, e, 0.5 + EXTRA),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn module(src: &str) -> Module {
+        naga::front::wgsl::parse_str(src).expect("parses")
+    }
+
+    #[test]
+    fn a_sum_of_exact_values_is_allowed_one_ulp() {
+        let m = module("fn f(a: f32, b: f32) -> f32 { return a + b; }");
+        let r = Interp::new(&m).run("f", &[1.0, 2.0]).unwrap();
+        assert_eq!(r[0].v, 3.0);
+        // 0.5 for the rounding, 0.5 for a contraction: 1 ULP of 3 = 2^-22.
+        assert!((r[0].e - f64::powi(2.0, -22)).abs() < 1e-12, "{}", r[0].e);
+    }
+
+    #[test]
+    fn a_division_by_a_value_near_zero_is_excluded() {
+        let m = module("fn f(a: f32, b: f32) -> f32 { return a / (b - 1.0); }");
+        let mut i = Interp::new(&m);
+        assert!(i.run("f", &[1.0, 1.0]).is_err());
+        assert!(i.run("f", &[1.0, 2.0]).is_ok());
+    }
+
+    #[test]
+    fn an_uncertain_select_takes_both_operands() {
+        // b 0.1 10 - 1 at b = 1 is 0 in exact arithmetic, give or take a few ULP: either branch.
+        let m = module(
+            "fn f(b: f32) -> f32 { return select(0.0, 10.0, (b * 0.1) * 10.0 - 1.0 >= 0.0); }",
+        );
+        let r = Interp::new(&m).run("f", &[1.0]).unwrap();
+        assert_eq!(r[0].v, 10.0);
+        assert!(r[0].e >= 10.0);
+    }
+}

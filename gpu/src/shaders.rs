@@ -1,0 +1,296 @@
+//! The WGSL twins: which kernel of the reference table each function stands for, their
+//! signatures held to the table's rows, the compute shader that runs one, and its
+//! translations.
+//!
+//! One table drives both sides: a WGSL function `ggx_d` is the twin of the table's kernel
+//! `ggx::d` (the path with `::` written `_`), its parameters must be the kernel's argument
+//! names in the kernel's order, each `f32` (`u32` for an enumerated choice), and its result
+//! `f32` for one output or `vecN<f32>` for N outputs. Functions prefixed `brdf_` are helpers.
+
+use brdf_ref::{KERNELS, Kernel};
+use naga::valid::{Capabilities, ModuleInfo, ValidationFlags, Validator};
+use naga::{Module, ScalarKind, TypeInner};
+
+/// The WGSL name of a kernel's twin: its path with `::` written `_`.
+#[must_use]
+pub fn wgsl_name(path: &str) -> String {
+    path.replace("::", "_")
+}
+
+/// One family's WGSL, parsed and validated after `COMMON` and the families it needs.
+pub struct Family {
+    /// The family's name (`ggx`, `fresnel`, ...).
+    pub name: &'static str,
+    /// `COMMON`, the families it needs, then the family's own source.
+    pub source: String,
+    /// The parsed module.
+    pub module: Module,
+}
+
+/// Parses and validates `source`.
+///
+/// # Errors
+/// naga's parse or validation error, rendered against the source.
+pub fn parse(source: &str, what: &str) -> Result<(Module, ModuleInfo), String> {
+    let module = naga::front::wgsl::parse_str(source)
+        .map_err(|e| format!("{what}: {}", e.emit_to_string(source)))?;
+    let info = Validator::new(ValidationFlags::all(), Capabilities::empty())
+        .validate(&module)
+        .map_err(|e| format!("{what}: {}", e.emit_to_string(source)))?;
+    Ok((module, info))
+}
+
+/// Every family of `brdf::wgsl`, each parsed after `COMMON`.
+///
+/// # Panics
+/// If a family does not parse or validate (the tests report which and why).
+#[must_use]
+pub fn families() -> Vec<Family> {
+    brdf::wgsl::FAMILIES
+        .iter()
+        .map(|fam| {
+            let name = fam.name;
+            let mut source = brdf::wgsl::COMMON.to_string();
+            for need in fam.needs {
+                let dep = brdf::wgsl::FAMILIES
+                    .iter()
+                    .find(|f| f.name == *need)
+                    .unwrap_or_else(|| panic!("{name} needs an unknown family {need}"));
+                source += dep.source;
+            }
+            source += fam.source;
+            let (module, _) = parse(&source, name).unwrap_or_else(|e| panic!("{e}"));
+            Family {
+                name,
+                source,
+                module,
+            }
+        })
+        .collect()
+}
+
+/// A kernel of the table with its WGSL twin.
+pub struct Twin {
+    /// The table's row.
+    pub kernel: &'static Kernel,
+    /// The WGSL function's name.
+    pub name: String,
+    /// Index into [`families`] of the family defining it.
+    pub family: usize,
+}
+
+/// The kernels of the table that have a twin, and those that do not (by path).
+#[must_use]
+pub fn twins(families: &[Family]) -> (Vec<Twin>, Vec<&'static str>) {
+    let mut with = Vec::new();
+    let mut without = Vec::new();
+    for k in KERNELS {
+        let name = wgsl_name(k.path);
+        let family = families.iter().position(|f| {
+            f.module
+                .functions
+                .iter()
+                .any(|(_, g)| g.name.as_deref() == Some(&*name))
+        });
+        match family {
+            Some(family) => with.push(Twin {
+                kernel: k,
+                name,
+                family,
+            }),
+            None => without.push(k.path),
+        }
+    }
+    (with, without)
+}
+
+/// Every difference between the WGSL functions of `families` and the table's rows: a
+/// function without a kernel, a parameter list or result that is not the kernel's.
+#[must_use]
+pub fn signature_mismatches(families: &[Family]) -> Vec<String> {
+    let mut out = Vec::new();
+    for fam in families {
+        let m = &fam.module;
+        for (_, f) in m.functions.iter() {
+            let name = f.name.clone().unwrap_or_default();
+            if name.starts_with("brdf_") {
+                continue;
+            }
+            let Some(k) = KERNELS.iter().find(|k| wgsl_name(k.path) == name) else {
+                out.push(format!(
+                    "{}: WGSL function {name} has no kernel in brdf_ref::table::KERNELS",
+                    fam.name
+                ));
+                continue;
+            };
+            let params: Vec<&str> = f
+                .arguments
+                .iter()
+                .map(|a| a.name.as_deref().unwrap_or("?"))
+                .collect();
+            let want: Vec<&str> = k.args.iter().map(|a| a.name).collect();
+            if params != want {
+                out.push(format!(
+                    "{name}: parameters ({}) but {} takes ({})",
+                    params.join(", "),
+                    k.path,
+                    want.join(", ")
+                ));
+            }
+            for (a, arg) in f.arguments.iter().zip(k.args) {
+                let t = &m.types[a.ty].inner;
+                // An enumerated parameter (a choice among integers) is u32, any other f32.
+                let ok = if arg.domain.integer {
+                    matches!(t, TypeInner::Scalar(s) if s.kind == ScalarKind::Uint && s.width == 4)
+                } else {
+                    is_f32(t)
+                };
+                if !ok {
+                    out.push(format!(
+                        "{name}: parameter {:?} is not {}",
+                        a.name.as_deref(),
+                        if arg.domain.integer { "u32" } else { "f32" }
+                    ));
+                }
+            }
+            let n = match f.result.as_ref().map(|r| &m.types[r.ty].inner) {
+                Some(t) if is_f32(t) => 1,
+                Some(TypeInner::Vector { size, scalar })
+                    if scalar.kind == ScalarKind::Float && scalar.width == 4 =>
+                {
+                    *size as usize
+                }
+                other => {
+                    out.push(format!(
+                        "{name}: result {other:?} is neither f32 nor vecN<f32>"
+                    ));
+                    continue;
+                }
+            };
+            if n != k.outputs.len() {
+                out.push(format!(
+                    "{name}: {n} results but {} has {} outputs",
+                    k.path,
+                    k.outputs.len()
+                ));
+            }
+        }
+    }
+    out
+}
+
+fn is_f32(t: &TypeInner) -> bool {
+    matches!(t, TypeInner::Scalar(s) if s.kind == ScalarKind::Float && s.width == 4)
+}
+
+/// Threads per workgroup of the kernels' compute shaders.
+pub const WORKGROUP: u32 = 64;
+
+/// A compute shader running `twin` on every row of `brdf_in` (the arguments, row after row)
+/// into `brdf_out` (the outputs, row after row): the family's source and an entry point
+/// `main`.
+#[must_use]
+pub fn compute_shader(twin: &Twin, families: &[Family]) -> String {
+    let k = twin.kernel;
+    let (na, no) = (k.args.len(), k.outputs.len());
+    let args: Vec<String> = k
+        .args
+        .iter()
+        .enumerate()
+        .map(|(j, a)| {
+            let x = format!("brdf_in[i * {na}u + {j}u]");
+            if a.domain.integer {
+                format!("u32({x})")
+            } else {
+                x
+            }
+        })
+        .collect();
+    let stores: String = if no == 1 {
+        "    brdf_out[i] = r;\n".to_string()
+    } else {
+        (0..no)
+            .map(|j| format!("    brdf_out[i * {no}u + {j}u] = r[{j}];\n"))
+            .collect()
+    };
+    format!(
+        "{src}
+@group(0) @binding(0) var<storage, read> brdf_in: array<f32>;
+@group(0) @binding(1) var<storage, read_write> brdf_out: array<f32>;
+
+@compute @workgroup_size({WORKGROUP})
+fn main(@builtin(global_invocation_id) gid: vec3<u32>) {{
+    let i = gid.x;
+    if i >= arrayLength(&brdf_out) / {no}u {{
+        return;
+    }}
+    let r = {name}({args});
+{stores}}}
+",
+        src = families[twin.family].source,
+        name = twin.name,
+        args = args.join(", "),
+    )
+}
+
+/// The translations of one validated compute shader.
+pub struct Translations {
+    /// SPIR-V words.
+    pub spirv: Vec<u32>,
+    /// GLSL 4.50 (compute).
+    pub glsl: String,
+    /// HLSL (shader model 5.1).
+    pub hlsl: String,
+    /// Metal Shading Language.
+    pub msl: String,
+}
+
+/// Translates a module with the compute entry point `main` to SPIR-V, GLSL, HLSL and MSL.
+///
+/// # Errors
+/// The first back end's error.
+pub fn translate(module: &Module, info: &ModuleInfo) -> Result<Translations, String> {
+    use naga::back::{glsl, hlsl, msl, spv};
+    let stage = naga::ShaderStage::Compute;
+    let spirv = spv::write_vec(module, info, &spv::Options::default(), None)
+        .map_err(|e| format!("SPIR-V: {e}"))?;
+    let mut glsl_src = String::new();
+    let options = glsl::Options {
+        version: glsl::Version::Desktop(450),
+        ..glsl::Options::default()
+    };
+    let pipeline = glsl::PipelineOptions {
+        shader_stage: stage,
+        entry_point: "main".into(),
+        multiview: None,
+    };
+    glsl::Writer::new(
+        &mut glsl_src,
+        module,
+        info,
+        &options,
+        &pipeline,
+        naga::proc::BoundsCheckPolicies::default(),
+    )
+    .and_then(|mut w| w.write())
+    .map_err(|e| format!("GLSL: {e}"))?;
+    let mut hlsl_src = String::new();
+    let hlsl_pipeline = hlsl::PipelineOptions {
+        entry_point: Some((stage, "main".into())),
+    };
+    hlsl::Writer::new(&mut hlsl_src, &hlsl::Options::default(), &hlsl_pipeline)
+        .write(module, info, None)
+        .map_err(|e| format!("HLSL: {e}"))?;
+    let msl_pipeline = msl::PipelineOptions {
+        entry_point: Some((stage, "main".into())),
+        ..msl::PipelineOptions::default()
+    };
+    let (msl_src, _) = msl::write_string(module, info, &msl::Options::default(), &msl_pipeline)
+        .map_err(|e| format!("MSL: {e}"))?;
+    Ok(Translations {
+        spirv,
+        glsl: glsl_src,
+        hlsl: hlsl_src,
+        msl: msl_src,
+    })
+}

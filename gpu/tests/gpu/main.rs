@@ -1,0 +1,15 @@
+//! The WGSL twins: validated, translated, checked by the shading languages' own validators,
+//! held to the reference table's signatures, run on the adapter wgpu finds and held to the
+//! bound the WGSL accuracy table implies.
+//!
+//! | module | property |
+//! |---|---|
+//! | `translate` | every twin parses, validates, and translates to SPIR-V (spirv-val), GLSL (glslangValidator), HLSL, MSL |
+//! | `signatures` | every WGSL function has its Rust twin's name, parameters and outputs |
+//! | `equivalence` | every twin on the GPU stays within its spec-derived bound of the CPU's f32 |
+//! | `readme` | the README's wgpu example is this crate's code and builds a pipeline |
+
+mod equivalence;
+mod readme;
+mod signatures;
+mod translate;

@@ -1,0 +1,193 @@
+//! WGSL twins of the kernels, as source text for shaders.
+//!
+//! Each constant is one family's WGSL source (the files under `wgsl/` in the repository): the
+//! functions are named by the Rust kernel's path with `::` written `_` (`ggx::d` is `ggx_d`,
+//! `fresnel::schlick_f90` is `fresnel_schlick_f90`), take the Rust kernel's arguments in the
+//! same order (a `V3` argument as its three components `w_x, w_y, w_z`, as the reference CLI
+//! `brdf-ref --list` prints them), and use the same numerically stable forms (GGX D's
+//! cancellation-free denominator (1 - c)(1 + c) + c^2 alpha^2, the alpha clamps
+//! `ALPHA_MIN`/`ALPHA_MAX`, the caps at the largest finite value). Multi-channel results are
+//! `vec3<f32>` (`vec2<f32>` for two); an enumerated parameter (the material's diffuse
+//! coupling) is a `u32`. Helpers are prefixed `brdf_`; those shared by the families live in
+//! [`COMMON`].
+//!
+//! # Composing
+//! [`COMMON`] must come first, then each family after the families it calls into
+//! ([`Family::needs`]: [`COOK_TORRANCE`] needs [`GGX`] and [`FRESNEL`], [`DIFFUSE`] needs
+//! [`FRESNEL`], [`MATERIAL`] needs [`GGX`]). No
+//! family defines a name another family defines, so any such subset concatenated after
+//! [`COMMON`] is one valid WGSL module:
+//!
+//! ```
+//! let source = [brdf::wgsl::COMMON, brdf::wgsl::GGX, brdf::wgsl::FRESNEL].concat();
+//! assert!(source.contains("fn ggx_d(n_dot_h: f32, alpha: f32) -> f32"));
+//! ```
+//!
+//! [`ALL`] is every family in that order. With `wgpu`, pass the concatenation followed by
+//! your own entry points to `device.create_shader_module` as `ShaderSource::Wgsl` (the
+//! repository's README shows it, compiled by the `brdf-gpu` tests). The sources carry no
+//! `#define_import_path` or import lines: for naga_oil or WESL, register the concatenation as
+//! one module of your own.
+//!
+//! # What differs from the Rust kernels
+//! The twins compute in `f32`, rounding every operation: the Rust kernels that round once
+//! through double words (`ggx::d`, `ggx::lambda`, `fresnel::f0_from_ior`, ...) carry error-free
+//! transformations that a WGSL implementation may undo, since it may reassociate and contract
+//! floating-point operations (W3C, "WebGPU Shading Language", section "Floating Point
+//! Evaluation"). WGSL also promises nothing for infinities and NaN, so the Rust kernels' rule
+//! "NaN in, NaN out" has no twin: a NaN or infinite argument gives an unspecified value. The
+//! repository's `brdf-gpu` workspace member runs every twin on a GPU API and holds it, input
+//! by input, to an error bound derived from the accuracy table of that same section.
+
+/// Constants and helpers every family uses (pi, the largest finite `f32`, the alpha clamps,
+/// 1 - c^2 without cancellation), and the twins of `brdf::microfacet`'s roughness conversions.
+/// Include it once, first.
+pub const COMMON: &str = include_str!("../wgsl/common.wgsl");
+
+/// The twins of `brdf::frame`'s local-frame trigonometry (cos, sin and tan of theta, cos and
+/// sin of phi, from a direction's components; the direction of spherical angles).
+pub const FRAME: &str = include_str!("../wgsl/frame.wgsl");
+
+/// The twins of `brdf::ggx`'s free functions (D, the fast D, anisotropic D, Lambda, G1, the
+/// height-correlated V and its Hammon and Filament fast forms, Schlick's G1, k and V) and of
+/// `ggx::Ggx`'s methods on local directions (`ggx_Ggx_d`, `ggx_Ggx_lambda`, ..., taking the
+/// constructor's `alpha_x, alpha_y` first).
+pub const GGX: &str = include_str!("../wgsl/ggx.wgsl");
+
+/// The twins of `brdf::fresnel`'s Schlick family (plain, F90, spherical Gaussian, F82 tint,
+/// RGB forms), the exact dielectric reflectance (polarized and not), F0 and IOR conversions
+/// and the dielectric average's fit.
+pub const FRESNEL: &str = include_str!("../wgsl/fresnel.wgsl");
+
+/// The twins of `brdf::beckmann`'s D, fast D, Smith's a, Walter's rational Lambda and the
+/// Blinn-Phong exponent conversions.
+pub const BECKMANN: &str = include_str!("../wgsl/beckmann.wgsl");
+
+/// The twins of `brdf::cook_torrance`'s half-vector cosines and isotropic GGX lobes from dot
+/// products (constant F, Schlick RGB, exact dielectric). Needs [`GGX`] and [`FRESNEL`] before it.
+pub const COOK_TORRANCE: &str = include_str!("../wgsl/cook_torrance.wgsl");
+
+/// The twins of `brdf::diffuse`'s Lambert, qualitative Oren-Nayar (with its A and B), Burley
+/// and renormalized Burley lobes, the diffuse-Fresnel couplings, and the parameter types'
+/// `eval` on local directions (`diffuse_Burley_eval`, ...). Needs [`FRESNEL`] before it.
+pub const DIFFUSE: &str = include_str!("../wgsl/diffuse.wgsl");
+
+/// The twins of `brdf::phong`: classic, modified and normalized Phong, Lambert plus Phong,
+/// Blinn-Phong with exact and approximate normalization, the Blinn-Phong NDF, and the
+/// parameter types' `eval` on local directions (`phong_BlinnPhong_eval`, ...).
+pub const PHONG: &str = include_str!("../wgsl/phong.wgsl");
+
+/// The twins of `brdf::lights`: reflected radiance (radiometric and pi c_light), irradiance,
+/// inverse-square, windowed and polynomial falloffs, spot cones (from cosines, and
+/// `lights::SpotCone` from its angles).
+pub const LIGHTS: &str = include_str!("../wgsl/lights.wgsl");
+
+/// The twins of `brdf::tonemap`'s sanitize, Reinhard (plain, extended, on luminance, extended
+/// on luminance, Jodie) and Narkowicz ACES curves, and of `brdf::color`'s sRGB and Rec.709
+/// transfer, gamma and luminance.
+pub const TONEMAP: &str = include_str!("../wgsl/tonemap.wgsl");
+
+/// The twins of `brdf::material`'s F0 from reflectance and the metallic-roughness BRDF from
+/// dot products (its three diffuse couplings, and glTF's composition). Needs [`GGX`] before it.
+pub const MATERIAL: &str = include_str!("../wgsl/material.wgsl");
+
+/// The twins of `brdf::ibl::dfg`'s per-pixel terms: the analytic split-sum fits (Karis mobile,
+/// Lazarov, Narkowicz's two), the split-sum specular, the roughness-mip mappings.
+pub const IBL: &str = include_str!("../wgsl/ibl.wgsl");
+
+/// The twins of `brdf::sampling`'s cosine-hemisphere pdf and reflection Jacobian.
+pub const SAMPLING: &str = include_str!("../wgsl/sampling.wgsl");
+
+/// [`COMMON`] followed by every family, each after the families it needs: one module defining
+/// every twin.
+pub const ALL: &str = concat!(
+    include_str!("../wgsl/common.wgsl"),
+    include_str!("../wgsl/frame.wgsl"),
+    include_str!("../wgsl/ggx.wgsl"),
+    include_str!("../wgsl/fresnel.wgsl"),
+    include_str!("../wgsl/beckmann.wgsl"),
+    include_str!("../wgsl/cook_torrance.wgsl"),
+    include_str!("../wgsl/diffuse.wgsl"),
+    include_str!("../wgsl/phong.wgsl"),
+    include_str!("../wgsl/lights.wgsl"),
+    include_str!("../wgsl/tonemap.wgsl"),
+    include_str!("../wgsl/material.wgsl"),
+    include_str!("../wgsl/ibl.wgsl"),
+    include_str!("../wgsl/sampling.wgsl"),
+);
+
+/// One family's WGSL, with the families it calls into.
+#[derive(Clone, Copy, Debug)]
+pub struct Family {
+    /// The Rust module it twins (`ggx`, `cook_torrance`, ...).
+    pub name: &'static str,
+    /// Its source.
+    pub source: &'static str,
+    /// The families whose functions it calls, in the order to include them (after
+    /// [`COMMON`], before this one).
+    pub needs: &'static [&'static str],
+}
+
+/// Every family, in the order of [`ALL`].
+pub const FAMILIES: &[Family] = &[
+    Family {
+        name: "frame",
+        source: FRAME,
+        needs: &[],
+    },
+    Family {
+        name: "ggx",
+        source: GGX,
+        needs: &[],
+    },
+    Family {
+        name: "fresnel",
+        source: FRESNEL,
+        needs: &[],
+    },
+    Family {
+        name: "beckmann",
+        source: BECKMANN,
+        needs: &[],
+    },
+    Family {
+        name: "cook_torrance",
+        source: COOK_TORRANCE,
+        needs: &["ggx", "fresnel"],
+    },
+    Family {
+        name: "diffuse",
+        source: DIFFUSE,
+        needs: &["fresnel"],
+    },
+    Family {
+        name: "phong",
+        source: PHONG,
+        needs: &[],
+    },
+    Family {
+        name: "lights",
+        source: LIGHTS,
+        needs: &[],
+    },
+    Family {
+        name: "tonemap",
+        source: TONEMAP,
+        needs: &[],
+    },
+    Family {
+        name: "material",
+        source: MATERIAL,
+        needs: &["ggx"],
+    },
+    Family {
+        name: "ibl",
+        source: IBL,
+        needs: &[],
+    },
+    Family {
+        name: "sampling",
+        source: SAMPLING,
+        needs: &[],
+    },
+];

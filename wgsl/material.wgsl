@@ -1,0 +1,86 @@
+// brdf: the glTF 2.0 metallic-roughness material, the twins of the Rust module `material`
+// (F0 from Filament's reflectance, the BRDF from dot products with its three diffuse
+// couplings, and glTF's own composition). Needs common.wgsl and ggx.wgsl. The direction-vector
+// forms and the lobe sampling have no twin yet.
+
+// F0 = 0.16 reflectance^2 (Guy and Agopian 2018, "Physically Based Rendering in Filament",
+// 4.8.3.2).
+fn material_f0_from_reflectance(reflectance: f32) -> f32 {
+    return 0.16 * reflectance * reflectance;
+}
+
+// a (1 - w) + b w with both weights given (material::mix2).
+fn brdf_material_mix2(a: f32, b: f32, w: f32, one_minus_w: f32) -> f32 {
+    return fma(a, one_minus_w, b * w);
+}
+
+// (1 - t) a + t b.
+fn brdf_material_lerp(a: f32, b: f32, t: f32) -> f32 {
+    return (1.0 - t) * a + t * b;
+}
+
+// One channel: D V F + kd base / pi above the horizon, capped at the largest finite f32.
+fn brdf_material_channel(n_dot_v: f32, n_dot_l: f32, f: f32, dv: f32, diffuse: f32) -> f32 {
+    let value = min(fma(f, dv, diffuse), BRDF_F32_MAX);
+    return select(0.0, value, (n_dot_v > 0.0) & (n_dot_l > 0.0));
+}
+
+// The metallic-roughness BRDF from dot products, per channel (Khronos, "glTF 2.0
+// Specification", Appendix B; Karis 2013; Guy and Agopian 2018): F D V + kd base / pi with
+// alpha = roughness^2, the GGX D and height-correlated V, Schlick's F mixed between a
+// dielectric F0 (and F90 = 1) and the base colour by `metallic`. Schlick's weights are
+// w = (1 - c)^5 and 1 - w = c (1 + s (1 + s (1 + s (1 + s)))), s = 1 - c, c = v.h clamped to
+// [0, 1], so that 1 - w does not cancel. `coupling` picks the diffuse weight kd: 0 = glTF's
+// (1 - metallic)(1 - max_rgb F_dielectric), 1 = (1 - metallic)(1 - F) per channel,
+// 2 = 1 - metallic.
+fn material_metallic_roughness(
+    n_dot_v: f32, n_dot_l: f32, n_dot_h: f32, v_dot_h: f32,
+    base_color_r: f32, base_color_g: f32, base_color_b: f32,
+    metallic: f32, roughness: f32, dielectric_f0: f32, coupling: u32,
+) -> vec3<f32> {
+    let alpha = microfacet_alpha_from_perceptual(roughness);
+    let c = saturate(v_dot_h);
+    let s = 1.0 - c;
+    let s2 = s * s;
+    let w = s2 * s2 * s;
+    let one_minus_w = c * fma(s, fma(s, fma(s, s + 1.0, 1.0), 1.0), 1.0);
+    let one_minus_m = 1.0 - metallic;
+    let f_dielectric = brdf_material_mix2(dielectric_f0, 1.0, w, one_minus_w);
+    let g_dielectric = brdf_material_mix2(1.0 - dielectric_f0, 0.0, w, one_minus_w);
+    let base = vec3<f32>(base_color_r, base_color_g, base_color_b);
+    let dv = min(ggx_d(n_dot_h, alpha) * ggx_v_correlated(n_dot_v, n_dot_l, alpha), BRDF_F32_MAX);
+    return vec3<f32>(
+        brdf_material_lobe(n_dot_v, n_dot_l, base.x, metallic, one_minus_m, w, one_minus_w,
+            f_dielectric, g_dielectric, dv, coupling),
+        brdf_material_lobe(n_dot_v, n_dot_l, base.y, metallic, one_minus_m, w, one_minus_w,
+            f_dielectric, g_dielectric, dv, coupling),
+        brdf_material_lobe(n_dot_v, n_dot_l, base.z, metallic, one_minus_m, w, one_minus_w,
+            f_dielectric, g_dielectric, dv, coupling),
+    );
+}
+
+// One channel of material_metallic_roughness for the base colour `base`.
+fn brdf_material_lobe(
+    n_dot_v: f32, n_dot_l: f32, base: f32, metallic: f32, one_minus_m: f32, w: f32,
+    one_minus_w: f32, f_dielectric: f32, g_dielectric: f32, dv: f32, coupling: u32,
+) -> f32 {
+    let f_metal = brdf_material_mix2(base, 1.0, w, one_minus_w);
+    let g_metal = (1.0 - base) * one_minus_w;
+    let f = brdf_material_lerp(f_dielectric, f_metal, metallic);
+    let g = brdf_material_lerp(g_dielectric, g_metal, metallic);
+    // The dielectric F0 is grey: max_rgb of its Fresnel is any channel's.
+    let kd = select(select(one_minus_m, g * one_minus_m, coupling == 1u),
+        one_minus_m * g_dielectric, coupling == 0u);
+    let diffuse = kd * base * BRDF_FRAC_1_PI;
+    return brdf_material_channel(n_dot_v, n_dot_l, f, dv, diffuse);
+}
+
+// glTF 2.0's own composition (Appendix B): material_metallic_roughness with the dielectric
+// F0 = 0.04 and glTF's diffuse coupling.
+fn material_gltf(
+    n_dot_v: f32, n_dot_l: f32, n_dot_h: f32, v_dot_h: f32,
+    base_color_r: f32, base_color_g: f32, base_color_b: f32, metallic: f32, roughness: f32,
+) -> vec3<f32> {
+    return material_metallic_roughness(n_dot_v, n_dot_l, n_dot_h, v_dot_h,
+        base_color_r, base_color_g, base_color_b, metallic, roughness, 0.04, 0u);
+}
