@@ -8,7 +8,7 @@ lib="$here/root/usr/lib/x86_64-linux-gnu"
 test -e "$lib/libvulkan.so.1" || { echo "no $lib/libvulkan.so.1: run prepare.sh first" >&2; exit 1; }
 export LD_LIBRARY_PATH="$lib${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}"
 if [ -z "${VK_ICD_FILENAMES:-}" ] && [ -z "${VK_DRIVER_FILES:-}" ]; then
-  for dir in /usr/share/vulkan/icd.d /etc/vulkan/icd.d /usr/local/share/vulkan/icd.d; do
+  for dir in /usr/local/nvidia/share/vulkan/icd.d /usr/share/vulkan/icd.d /etc/vulkan/icd.d /usr/local/share/vulkan/icd.d; do
     if [ -f "$dir/nvidia_icd.json" ]; then
       # VK_DRIVER_FILES for loaders from 1.3.207 on, VK_ICD_FILENAMES for older ones.
       export VK_DRIVER_FILES="$dir/nvidia_icd.json" VK_ICD_FILENAMES="$dir/nvidia_icd.json"
@@ -22,7 +22,7 @@ mkdir -p "$out"
   echo "date: $(date -u +%Y-%m-%dT%H:%M:%SZ)"
   echo "LD_LIBRARY_PATH=$LD_LIBRARY_PATH"
   echo "VK_DRIVER_FILES=${VK_DRIVER_FILES:-} VK_ICD_FILENAMES=${VK_ICD_FILENAMES:-}"
-  ls /usr/share/vulkan/icd.d /etc/vulkan/icd.d 2>/dev/null || true
+  ls /usr/local/nvidia/share/vulkan/icd.d /usr/share/vulkan/icd.d /etc/vulkan/icd.d 2>/dev/null || true
   if command -v nvidia-smi >/dev/null; then
     nvidia-smi --query-gpu=name,driver_version --format=csv,noheader || true
   fi
