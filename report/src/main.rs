@@ -17,7 +17,7 @@ mod stability;
 mod textbook;
 mod tradeoff;
 
-use sections::{checks, ibl as ibl_section, lobes, tonemap as tonemap_section};
+use sections::{checks, gpu as gpu_section, ibl as ibl_section, lobes, tonemap as tonemap_section};
 use std::error::Error;
 use std::path::{Path, PathBuf};
 use std::time::Instant;
@@ -429,7 +429,7 @@ fn main() -> Result<(), Box<dyn Error>> {
         "Sections: error against run time, stability on extreme inputs, energy, then the \
          crate's checks (integrators, lanes, the accuracy table, NDF normalization, Smith's \
          weak furnace, tonemapping, diffuse and Phong lobes, the material furnace, lights, \
-         image-based lighting). Every table has its CSV beside this file.\n"
+         image-based lighting, the WGSL twins on GPUs). Every table has its CSV beside this file.\n"
     );
     let fams = tradeoff::families();
     let mut measured = stage("error of every form", t0, || {
@@ -487,6 +487,7 @@ fn main() -> Result<(), Box<dyn Error>> {
             ibl_section::dfg_section();
             ibl_section::irradiance_section();
             ibl_section::energy_section();
+            gpu_section::gpu_section();
             Ok(())
         },
     )?;
