@@ -5,7 +5,6 @@
 
 use std::path::{Path, PathBuf};
 
-
 /// One adapter's snapshot.
 struct Snapshot {
     /// The folder's name under `gpu/results/`.
