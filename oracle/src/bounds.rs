@@ -93,7 +93,7 @@ pub const BOUNDS: &[Bound] = &[
     b("Ggx::g2_correlated", 0.7, 0.7, 0.7, 0.7),
     b("Ggx::g2_separable", 0.7, 0.7, 0.7, 0.7),
     b("Ggx::v_correlated", 0.7, 0.7, 0.7, 0.7),
-    b("beckmann::d", 1.7, 1.6, 1.8, 1.9),
+    b("beckmann::d", 0.7, 1.7, 0.7, 2.1),
     b("Beckmann::d", 1.7, 1.8, 1.8, 2.4).fma(1.7, 1.8, 1.8, 2.3),
     b("beckmann::lambda", 2.5, 2.0, 2.5, 2.3),
     b("beckmann::g1", 3.3, 2.4, 3.3, 2.4),

@@ -102,9 +102,10 @@ fn exp_ftz_is_exp_with_subnormal_results_flushed_on_every_127th_bit_pattern() {
 
 /// On x86-64 the MXCSR flags record, per thread, whether any SSE/AVX instruction met a
 /// subnormal operand (DE) or produced a tiny result (UE): each such instruction costs a
-/// microcode assist. `exp_ftz` on f32x8 lanes and `beckmann::d_fast` on every lane type raise
-/// neither for normal inputs (and 0), across every 127th f32 bit pattern and a (cosine, alpha)
-/// grid with cosines from 2^-149 to 1. This is the only `unsafe` in the crate's tests: reading
+/// microcode assist. `exp_ftz` on f32x8 lanes, `beckmann::d_fast` on every lane type and
+/// `beckmann::d` on `f32` and `f32x8` (evaluated in f64, its subnormal results made from
+/// normal ones) raise neither for normal inputs (and 0), across every 127th f32 bit pattern
+/// and a (cosine, alpha) grid with cosines from 2^-149 to 1. This is the only `unsafe` in the crate's tests: reading
 /// and clearing the flag register.
 #[cfg(all(target_arch = "x86_64", feature = "beckmann"))]
 #[test]
@@ -147,6 +148,15 @@ fn normal_inputs_meet_no_subnormal_number() {
             let (cv, av) = std::hint::black_box((f32x8::new(c32), f32x8::splat(a as f32)));
             std::hint::black_box(beckmann::d_fast(cv, av));
             assert!(!flagged(), "f32x8 d_fast({c32:?}, {a}) met a subnormal");
+            clear();
+            std::hint::black_box(beckmann::d(cv, av));
+            assert!(!flagged(), "f32x8 d({c32:?}, {a}) met a subnormal");
+            for &v in &c32 {
+                clear();
+                let (cs, as_) = std::hint::black_box((v, a as f32));
+                std::hint::black_box(beckmann::d(cs, as_));
+                assert!(!flagged(), "f32 d({v:e}, {a}) met a subnormal");
+            }
             for q in c.chunks(4) {
                 let c64: [f64; 4] = core::array::from_fn(|l| q.get(l).copied().unwrap_or(0.0));
                 clear();
