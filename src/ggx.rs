@@ -55,7 +55,9 @@
 //!
 //! D squares its denominator t = sin^2 + cos^2 alpha^2, so a plain evaluation counts t's
 //! rounding twice (5.6 ULP); it is carried to twice the working precision instead (Dekker's
-//! two-product and Knuth's two-sum, about 150 extra flops), as are the separable G2's two G1
+//! two-product and Knuth's two-sum, about 150 extra flops; the isotropic [`d`] on `f32` and
+//! `f32x8` is evaluated in f64 instead, where the plain formula's roundings are 2^-29 of an
+//! f32 ULP, and rounded once), as are the separable G2's two G1
 //! (about 120 extra flops), and both are rounded once. The Smith terms (Lambda, G1, the
 //! correlated G2 and V) likewise: a plain evaluation of sqrt(c^2 + alpha^2 sin^2) and the
 //! products around it reaches 4.5 ULP (Lambda, f32) to 5.7 ULP (`Ggx::v_correlated`, f64),
@@ -355,8 +357,13 @@ impl<T: Real> Microfacet<T> for Ggx<T> {
 /// (1 + c^2 (alpha^2 - 1))^2). D(1) = 1 / (pi alpha^2), the peak for alpha <= 1 (for
 /// alpha > 1 the largest value is alpha^2 / pi, toward c = 0). Domain: n_dot_h in [-1, 1]
 /// (above 1 clamped to 1), alpha in [0, +inf) finite, clamped to [ALPHA_MIN, ALPHA_MAX]; NaN
-/// for NaN input, alpha < 0 or +inf. Correctly rounded to within 0.5 ULP (module docs): every
-/// rounding is recovered by error-free transformations and the result rounded once.
+/// for NaN input, alpha < 0 or +inf. Correctly rounded to within 0.5 ULP (module docs), the
+/// result rounded once: on `f64` and `f64x4` every rounding is recovered by error-free
+/// transformations (double words, about 150 extra flops); on `f32` and `f32x8` the plain
+/// formula is evaluated in f64 (`f32x8` as two `f64x4` halves, lane for lane the scalar
+/// operations), where c^2 and alpha^2 are exact and t = (1 - c^2) + c^2 alpha^2, t^2 and the
+/// one division carry six roundings of 2^-53 in all, below 2^-26 of an f32 ULP (D is never below
+/// 3e-9, so no result is subnormal).
 ///
 /// `alpha` is the GGX width, not perceptual roughness: alpha = r^2 for a material's roughness r
 /// ([`alpha_from_perceptual`]). Filament's `D_GGX(roughness, NoH)` takes this same alpha as
@@ -371,12 +378,39 @@ impl<T: Real> Microfacet<T> for Ggx<T> {
 pub fn d<T: Real>(n_dot_h: T, alpha: T) -> T {
     let a = clamp_alpha(alpha);
     let c = n_dot_h.min(T::ONE);
-    // Every rounding recovered (Dekker products, Knuth sums): the denominator's t is squared,
-    // so a plain evaluation counts its rounding twice.
-    let a2 = Rel::exact(a).mul(Rel::exact(a));
-    let t = Rel::one_minus_sq(c).add(Rel::exact(c).mul(Rel::exact(c)).mul(a2));
-    let d = a2.div(t.mul(t).mul(Rel::pi())).value();
+    let d = T::via_f64([c, a], DIso, crate::real::sealed::Token::NEW);
     nan_where(a.is_nan(), above(n_dot_h, d))
+}
+
+/// The isotropic D of [`d`] for c = min(n_dot_h, 1) and the clamped alpha (c <= 0 is replaced
+/// by the caller): double words in f64 and f64x4, one f64 evaluation rounded once in f32 and
+/// f32x8.
+#[derive(Clone, Copy)]
+struct DIso;
+
+impl crate::real::sealed::Widened<2> for DIso {
+    /// D >= 1 / (pi max(1, alpha^2)) >= 3e-9: never below f32's smallest normal number.
+    const TINY: bool = false;
+
+    #[inline]
+    fn native<T: Real>(self, [c, a]: [T; 2]) -> T {
+        // Every rounding recovered (Dekker products, Knuth sums): the denominator's t is
+        // squared, so a plain evaluation counts its rounding twice.
+        let a2 = Rel::exact(a).mul(Rel::exact(a));
+        let t = Rel::one_minus_sq(c).add(Rel::exact(c).mul(Rel::exact(c)).mul(a2));
+        a2.div(t.mul(t).mul(Rel::pi())).value()
+    }
+
+    #[inline]
+    fn wide<W: Real<Scalar = f64>>(self, [c, a]: [W; 2]) -> W {
+        // c^2 and alpha^2 are exact (48 significant bits); 1 - c^2, t = (1 - c^2) + c^2 alpha^2
+        // (a sum of non-negative terms), t^2 and the quotient round once each (pi and its
+        // product once more): within 6 units of 2^-53 of D, which then rounds to f32 once.
+        let c2 = c * c;
+        let a2 = a * a;
+        let t = c2.mul_add(a2, W::ONE - c2);
+        (a2 * W::splat(core::f64::consts::FRAC_1_PI)) / (t * t)
+    }
 }
 
 /// Isotropic GGX NDF in working precision, the fast companion of [`d`]: the same
