@@ -509,9 +509,12 @@ pub fn g1<T: Real>(n_dot_v: T, alpha: T) -> T {
 /// Cosines in [-1, 1], clamped to [0, 1]; alpha as [`d`]. Finite when either cosine is
 /// positive (at NoL = 0 it is 0.5 / (NoV alpha)); 0 when both are 0; capped at the largest
 /// finite value; NaN for NaN input. Within 0.5 ULP on every lane type, cosines down to
-/// subnormals included: both square roots and the outer products are double words, the
-/// outer cosines are scaled by a power of two first, and the quotient is rounded once (module
-/// docs). Filament's plain form reaches 3.6 ULP (f32) at a fifth of the run time.
+/// subnormals included. On `f64` and `f64x4` both square roots and the outer products are
+/// double words, the outer cosines are scaled by a power of two first, and the quotient is
+/// rounded once (module docs); Filament's plain form reaches 3.6 ULP (f32) at a fifth of
+/// that run time. On `f32` and `f32x8` the plain form is evaluated in f64 (`f32x8` as two
+/// `f64x4` halves, lane for lane the scalar operations) and rounded to f32 once: about ten
+/// roundings of 2^-53, two square roots and one division.
 ///
 /// [`alpha_from_perceptual`]: crate::microfacet::alpha_from_perceptual
 #[inline]
@@ -519,14 +522,44 @@ pub fn g1<T: Real>(n_dot_v: T, alpha: T) -> T {
 pub fn v_correlated<T: Real>(n_dot_v: T, n_dot_l: T, alpha: T) -> T {
     let (cv, cl) = (n_dot_v.saturate(), n_dot_l.saturate());
     let a = clamp_alpha(alpha);
-    // Both outer cosines are scaled by the power of two S (exact; [`cos_scale`]): at cosines
-    // near the smallest normal the products NoL sqrt(...) would be subnormal and lose bits;
-    // 0.5 S / (S den) is the same quotient.
-    let den = correlated_den(cv, root_dw(cv, q_iso(cv, a)), cl, root_dw(cl, q_iso(cl, a)));
-    nan_where(
-        n_dot_v.is_nan() | n_dot_l.is_nan() | a.is_nan(),
-        v_from_den(den),
-    )
+    let v = T::via_f64([cv, cl, a], VIso, crate::real::sealed::Token::NEW);
+    nan_where(n_dot_v.is_nan() | n_dot_l.is_nan() | a.is_nan(), v)
+}
+
+/// The height-correlated V of [`v_correlated`] for the saturated cosines and the clamped
+/// alpha: double words in f64 and f64x4, one f64 evaluation rounded once in f32 and f32x8.
+#[derive(Clone, Copy)]
+struct VIso;
+
+impl crate::real::sealed::Widened<3> for VIso {
+    /// V >= 0.5 / (2 max(1, ALPHA_MAX)) = 2.5e-5 where it is not 0.
+    const TINY: bool = false;
+
+    #[inline]
+    fn native<T: Real>(self, [cv, cl, a]: [T; 3]) -> T {
+        // Both outer cosines are scaled by the power of two S (exact; [`cos_scale`]): at
+        // cosines near the smallest normal the products NoL sqrt(...) would be subnormal and
+        // lose bits; 0.5 S / (S den) is the same quotient.
+        let den = correlated_den(cv, root_dw(cv, q_iso(cv, a)), cl, root_dw(cl, q_iso(cl, a)));
+        v_from_den(den)
+    }
+
+    #[inline]
+    fn wide<W: Real<Scalar = f64>>(self, [cv, cl, a]: [W; 3]) -> W {
+        // The squares of the f32 cosines and alpha are exact; each root's argument
+        // c^2 + alpha^2 (1 - c^2) rounds at most three times, the root, the two outer
+        // products, their sum and the quotient once each: about ten roundings of 2^-53 in
+        // all. Subnormal f32 cosines have squares far inside f64's normal range; the result,
+        // capped at f32's largest finite value, then rounds to f32 once.
+        let a2 = a * a;
+        let root = |c: W| {
+            let c2 = c * c;
+            a2.mul_add(W::ONE - c2, c2).sqrt()
+        };
+        let den = cl.mul_add(root(cv), cv * root(cl));
+        let v = (W::HALF / den).min(W::splat(f64::from(f32::MAX)));
+        W::select(den.simd_gt(W::ZERO), v, W::ZERO)
+    }
 }
 
 /// `0.5 / den` for den > 0 (capped at MAX), 0 for den <= 0: the shared guard of every V form;
