@@ -35,7 +35,7 @@
 //!
 //! | function | f32 | f64 | f32x8 | f64x4 |
 //! |---|---|---|---|---|
-//! | `d` | 0.7 (0.53) | 1.7 (1.52) | 0.7 (0.53) | 2.1 (1.89) |
+//! | `d` | 0.7 (0.53) | 1.7 (1.52) | 0.7 (0.53) | 2.2 (1.96) |
 //! | `Beckmann::d` | 1.7 (1.45) | 1.8 (1.57) | 1.8 (1.63) | 2.4 (2.18) |
 //! | `lambda` | 2.5 (2.27) | 2.0 (1.77) | 2.5 (2.27) | 2.3 (2.11) |
 //! | `g1` | 3.3 (3.14) | 2.4 (2.22) | 3.3 (3.14) | 2.4 (2.22) |
@@ -515,7 +515,7 @@ impl<T: Real> Microfacet<T> for Beckmann<T> {
 /// - `f64`, `f64x4`: E is carried with the error of each rounding recovered by Dekker's exact
 ///   products and the division remainder, D is exp(-E_hi) (1 - E_lo) / (pi alpha^2 c^4) with
 ///   the denominator's roundings recovered too, and the whole is rounded once (about 150
-///   extra flops): within 1.7 ULP (f64) / 2.1 (f64x4), exp's own error included.
+///   extra flops): within 1.7 ULP (f64) / 2.2 (f64x4), exp's own error included.
 /// - `f32`, `f32x8`: the same D is evaluated in f64 (`f32x8` as two `f64x4` halves, lane for
 ///   lane the scalar operations) and rounded to f32 once. There c^2 and alpha^2 are exact,
 ///   q = 1 / (c^2 alpha^2) and E = (1 - c^2) q carry four roundings of 2^-53 (an absolute

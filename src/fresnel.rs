@@ -43,7 +43,7 @@
 //! within about 2^-12 of the critical cosine, where dF/dcos is infinite, and at Rp's double
 //! zero at Brewster's angle) the oracle scores raw - kappa / 2, the raw error less what one
 //! rounding of the cosine explains; there the raw error stays below what that rounding
-//! explains: raw <= kappa / 2 + B with B = -2.7 (F, f32) / -2.6 (F, f64), -3.3 (Rs, Rp) and -3.3 (conductor, f32) / -1.0
+//! explains: raw <= kappa / 2 + B with B = -2.7 (F, f32) / -2.6 (F, f64), -3.3 (Rs, Rp) and -3.3 (conductor, f32) / -0.7
 //! (conductor, f64) (`docs/accuracy.md`). Points with eta within a few ulps of 1
 //! count as well conditioned (eta - 1 is exact) and are in the table above.
 //! The conductor carries N^2 - 1, s^2 = N^2 - sin^2, s (one Newton step), the squared
@@ -426,7 +426,7 @@ pub fn dielectric<T: Real>(cos_theta_i: T, eta: T) -> T {
 /// of the correctly rounded value where a 1-ulp change of the cosine moves it by at most 8
 /// ulps (max 0.50 / 3.69 found by the oracle's deep search over the whole domain; 3.10 for
 /// f64 with FMA); elsewhere (k near 0 at the critical angle) the raw error stays below what
-/// one rounding of the cosine explains (raw <= kappa / 2 - 3.3 in f32, kappa / 2 - 1.0 in
+/// one rounding of the cosine explains (raw <= kappa / 2 - 3.3 in f32, kappa / 2 - 0.7 in
 /// f64). Cost on `f64`, `f64x4`: about 420 flops, 290 more than the same ratios in working
 /// precision (fifteen Dekker squares or products, a dozen double-word sums, one double-word
 /// quotient); on `f32`, `f32x8`: about 40 f64 operations, two of them square roots and one
