@@ -572,6 +572,7 @@ impl crate::real::sealed::Widened<3> for VIso {
 /// within 0.5 ULP of the exact product plus about twenty roundings of 2^-53. Edges and bad
 /// input as the product's: 0 where n_dot_h <= 0 or both other cosines are 0, NaN for NaN in
 /// any input or an alpha out of its domain.
+#[cfg(feature = "cook-torrance")]
 #[inline]
 #[must_use]
 pub(crate) fn dv<T: Real>(n_dot_h: T, n_dot_v: T, n_dot_l: T, alpha: T) -> T {
@@ -584,9 +585,11 @@ pub(crate) fn dv<T: Real>(n_dot_h: T, n_dot_v: T, n_dot_l: T, alpha: T) -> T {
 }
 
 /// D V of [`dv`] for min(n_dot_h, 1), the saturated cosines and the clamped alpha.
+#[cfg(feature = "cook-torrance")]
 #[derive(Clone, Copy)]
 struct DvIso;
 
+#[cfg(feature = "cook-torrance")]
 impl crate::real::sealed::Widened<4> for DvIso {
     /// D V >= 3e-9 2.5e-5 where it is not 0.
     const TINY: bool = false;
