@@ -22,7 +22,8 @@
 //! as a value plus its first-order rounding error (Dekker's exact products, the exact division
 //! remainder, sin^2 = (1 - c)(1 + c) from exact factors), so exp does not multiply their
 //! rounding by E (up to 700 in f64); D's remaining factors are recovered the same way and
-//! rounded once. Lambda is evaluated in a form without cancellation (see [`lambda`]); where
+//! rounded once. The isotropic [`d`] on `f32` and `f32x8` is instead evaluated in f64, where
+//! the same formula needs no recovered roundings, and rounded to f32 once. Lambda is evaluated in a form without cancellation (see [`lambda`]); where
 //! cos^2 is too small for an exact two-product (a below 1e-8), Lambda is taken from
 //! 1 / a = alpha sin / cos directly. Error in ULPs of the correctly rounded result,
 //! measured by the MPFR oracle (Walter et al. 2007 eq. 25 and Heitz 2014 eqs. 80 and 83 with
@@ -34,7 +35,7 @@
 //!
 //! | function | f32 | f64 | f32x8 | f64x4 |
 //! |---|---|---|---|---|
-//! | `d` | 1.7 (1.46) | 1.6 (1.44) | 1.8 (1.61) | 1.9 (1.71) |
+//! | `d` | 0.7 (0.53) | 1.7 (1.52) | 0.7 (0.53) | 2.2 (1.96) |
 //! | `Beckmann::d` | 1.7 (1.45) | 1.8 (1.57) | 1.8 (1.63) | 2.4 (2.18) |
 //! | `lambda` | 2.5 (2.27) | 2.0 (1.77) | 2.5 (2.27) | 2.3 (2.11) |
 //! | `g1` | 3.3 (3.14) | 2.4 (2.22) | 3.3 (3.14) | 2.4 (2.22) |
@@ -508,23 +509,87 @@ impl<T: Real> Microfacet<T> for Beckmann<T> {
 /// the RMS slope, not perceptual roughness (from a slider value r: alpha = r^2,
 /// [`alpha_from_perceptual`]).
 ///
-/// exp(-E) turns a relative error in E into an absolute one E times larger; E is therefore
-/// carried with the error of each rounding recovered by Dekker's exact products and the
-/// division remainder, D is exp(-E_hi) (1 - E_lo) / (pi alpha^2 c^4) with the denominator's
-/// roundings recovered too, and the whole is rounded once (about 150 extra flops): within
-/// 1.7 ULP (f32) / 1.6 (f64) / 1.8 (f32x8) / 1.9 (f64x4), exp's own error included (module
-/// docs).
+/// exp(-E) turns a relative error in E into an absolute one E times larger, so E needs more
+/// than the working precision:
+///
+/// - `f64`, `f64x4`: E is carried with the error of each rounding recovered by Dekker's exact
+///   products and the division remainder, D is exp(-E_hi) (1 - E_lo) / (pi alpha^2 c^4) with
+///   the denominator's roundings recovered too, and the whole is rounded once (about 150
+///   extra flops): within 1.7 ULP (f64) / 2.2 (f64x4), exp's own error included.
+/// - `f32`, `f32x8`: the same D is evaluated in f64 (`f32x8` as two `f64x4` halves, lane for
+///   lane the scalar operations) and rounded to f32 once. There c^2 and alpha^2 are exact,
+///   q = 1 / (c^2 alpha^2) and E = (1 - c^2) q carry four roundings of 2^-53 (an absolute
+///   error below 1e-13 in E), e^-E = 2^-k e^-r with k = round(E / ln 2), |r| <= ln(2) / 2,
+///   e^-r by a degree-6 polynomial within 2.6e-9, and D = e^-E q^2 alpha^2 / pi with one
+///   division in all. D is 0 where E > 200 (there D < 1e-74 for every alpha in
+///   [ALPHA_MIN, ALPHA_MAX], so it rounds to 0), and a result below f32's smallest normal
+///   number is rounded from normal ones (`max(y, 2^-126)` and `min(y, 2^-126) + 2^-126`,
+///   joined in their bits), so that for normal inputs no instruction meets a subnormal number
+///   (on x86 each would cost a microcode assist; `tests/lanes/exp.rs` reads the flags that
+///   record one): within 0.7 ULP (f32, f32x8; 0.53 found), the polynomial's 0.04 included.
+///
+/// Measured by the MPFR oracle (module docs). Run time on `f32x8` (native build, one core of an
+/// AMD EPYC (Zen 4), 10^6 uniform cosines through [`crate::batch::run_f32`]): 1.61 ms, 2.3x
+/// [`d_fast`] and 2.55x Mitsuba 3's `eval` on the same batch (`bench/mitsuba/compare.py --n
+/// 1000000`, its README's table; 7.9x before the f64 evaluation).
 ///
 /// [`alpha_from_perceptual`]: crate::microfacet::alpha_from_perceptual
 #[inline]
 #[must_use]
 pub fn d<T: Real>(n_dot_h: T, alpha: T) -> T {
     let a = clamp_alpha(alpha);
-    let c = n_dot_h.min(T::ONE);
-    let (e, c2) = exponent_iso(c, a);
-    let den = Rel::exact(a).mul(Rel::exact(a)).mul(c2).mul(c2);
-    let value = crate::domain::above(n_dot_h, exp_neg_over(e, den));
-    nan_where(a.is_nan(), value)
+    // c <= 0 gives D = 0 through E = +inf (`DIso`); NaN is restored last, since the f32
+    // rounding does not keep it.
+    let c = n_dot_h.max(T::ZERO).min(T::ONE);
+    let value = T::via_f64([c, a], DIso, crate::real::sealed::Token::NEW);
+    nan_where(a.is_nan() | n_dot_h.is_nan(), value)
+}
+
+/// Above this exponent E the isotropic D is below 2^-150 for every alpha in [ALPHA_MIN,
+/// ALPHA_MAX] and every cosine, so it rounds to 0 in f32: with 1 / (c^2 alpha^2) = E / s2,
+/// D = e^-E E^2 alpha^2 / (pi s2^2) <= 4e8 e^-E E^2 / pi < 1e-74 where c^2 <= 1/2 (s2 >= 1/2),
+/// and D = e^-E / (pi alpha^2 c^4) <= 4 e^-E / (pi 1e-8) < 1e-79 where c^2 > 1/2.
+const E_ZERO_F32: f64 = 200.0;
+
+/// The isotropic D of `d` for c = min(n_dot_h, 1) and the clamped alpha (c <= 0 is replaced
+/// by the caller): double words in f64 and f64x4, one f64 evaluation rounded once in f32 and
+/// f32x8.
+#[derive(Clone, Copy)]
+struct DIso;
+
+impl crate::real::sealed::Widened<2> for DIso {
+    const TINY: bool = true;
+
+    #[inline]
+    fn native<T: Real>(self, [c, a]: [T; 2]) -> T {
+        let (e, c2) = exponent_iso(c, a);
+        let den = Rel::exact(a).mul(Rel::exact(a)).mul(c2).mul(c2);
+        crate::domain::above(c, exp_neg_over(e, den))
+    }
+
+    #[inline]
+    fn wide<W: Real<Scalar = f64>>(self, [c, a]: [W; 2]) -> W {
+        // c^2 and alpha^2 are exact (48 significant bits), 1 - c^2 and c^2 alpha^2 round
+        // once, so E = (1 - c^2) / (c^2 alpha^2) is within 4 units of 2^-53 of itself, an
+        // absolute error below 1e-13 for E <= 200 (against exp's 6e-11 relative). c^2 alpha^2
+        // >= 2e-98 for every positive f32 c, so no intermediate is subnormal; at c = 0, q and
+        // E are +inf, and the lane is 0 through `big`.
+        let c2 = c * c;
+        let a2 = a * a;
+        let s2 = W::ONE - c2;
+        let q = (c2 * a2).recip();
+        let e = s2 * q;
+        // E > 200 exactly where c^2 (1 + 200 alpha^2) < 1 (up to roundings, which move the
+        // edge by a few units of 2^-53 of E, where D is 0 in f32 on either side): tested on
+        // c^2 while q is divided, so that the clamp costs the chain one select.
+        let big = (c2 * (a2.mul_add(W::splat(E_ZERO_F32), W::ONE))).simd_lt(W::ONE);
+        let (p, two_k) = crate::widen::exp_neg_split(W::select(big, W::splat(E_ZERO_F32), e));
+        // D = e^-E / (pi c^4 alpha^2) = p 2^-k q^2 alpha^2 / pi, the factors other than p
+        // multiplied (and zeroed where E > 200) while p is evaluated; for E <= 200 and
+        // q <= 5e97 every factor and product lies between 1e-88 and 1e204.
+        let w = two_k * ((q * q) * (a2 * W::splat(core::f64::consts::FRAC_1_PI)));
+        p * W::select(big, W::ZERO, w)
+    }
 }
 
 /// Isotropic Beckmann NDF in working precision, the fast companion of [`d`]: the same
@@ -556,7 +621,7 @@ pub fn d<T: Real>(n_dot_h: T, alpha: T) -> T {
 ///
 /// | E = tan^2 / alpha^2 | <= 1 | (1, 10] | (10, 100] | (100, 1000] |
 /// |---|---|---|---|---|
-/// | f32, f32x8: ULP (relative) | 11 (7.1e-7) | 31 (2.0e-6) | 209 (1.5e-5) | D < 1e-30 |
+/// | f32, f32x8: ULP (relative) | 10 (6.9e-7) | 30 (1.9e-6) | 209 (1.5e-5) | D < 1e-30 |
 /// | f64, f64x4: ULP (relative) | 9 (1.3e-15) | 26 (3.4e-15) | 326 (4.1e-14) | 2507 (3.1e-13) |
 ///
 /// (`cargo test --all-features --test kernels fast_variants:: -- --nocapture`, default x86-64
@@ -565,9 +630,9 @@ pub fn d<T: Real>(n_dot_h: T, alpha: T) -> T {
 /// scalar results bit for bit; on f32x8 they differ only through the lane 2^-t, a polynomial
 /// within 2 ULP of libm's: within 6 ULP of D.
 ///
-/// Run time (native build, one core, 10^7 uniform cosines through
-/// [`crate::batch::run_f32`]): 1.7x a copy of the same bytes, 0.14x [`d`], 0.74x Mitsuba 3's
-/// `eval` on the same batch (`bench/mitsuba/compare.py`).
+/// Run time (native build, one core of an AMD EPYC (Zen 4), 10^6 uniform cosines through
+/// [`crate::batch::run_f32`]): 1.8x a copy of the same bytes, 0.43x [`d`], 1.11x Mitsuba 3's
+/// `eval` on the same batch (`bench/mitsuba/compare.py --n 1000000`, its README's table).
 #[inline]
 #[must_use]
 pub fn d_fast<T: Real>(n_dot_h: T, alpha: T) -> T {

@@ -157,12 +157,13 @@ pub fn ggx<T: Real>(c: Cosines<T>, alpha: Alpha<T>, fresnel: T) -> T {
     assemble(dv, c, alpha, fresnel)
 }
 
-/// D V of the isotropic GGX (uncapped; [`assemble`] caps it): shared by [`ggx`] and its
-/// Fresnel-specific forms so that they agree bit for bit.
+/// D V of the isotropic GGX (`crate::ggx::dv`: the product of `ggx::d` and
+/// `ggx::v_correlated` on f64 types, one f64 quotient rounded once on f32 types; [`assemble`]
+/// caps it): shared by [`ggx`] and its Fresnel-specific forms so that they agree bit for bit.
 #[cfg(feature = "ggx")]
 #[inline]
 fn ggx_dv<T: Real>(c: Cosines<T>, alpha: T) -> T {
-    crate::ggx::d(c.n_dot_h, alpha) * crate::ggx::v_correlated(c.n_dot_v, c.n_dot_l, alpha)
+    crate::ggx::dv(c.n_dot_h, c.n_dot_v, c.n_dot_l, alpha)
 }
 
 /// (D V capped at MAX) F capped at MAX, 0 below the horizon, NaN for NaN input, alpha outside

@@ -31,7 +31,7 @@
 //! | `dielectric` | 1.4 (1.24) | 1.4 (1.23) |
 //! | `dielectric_polarized` Rs | 0.7 (0.50) | 0.7 (0.50) |
 //! | `dielectric_polarized` Rp | 0.7 (0.50) | 0.7 (0.50) |
-//! | `conductor` | 3.5 (3.30) | 3.9 (3.69) |
+//! | `conductor` | 0.7 (0.50) | 3.9 (3.69) |
 //! | `schlick` | 3.2 (3.05) | 3.5 (3.25) |
 //! | `f0_from_ior` | 0.7 (0.50) | 0.7 (0.50) |
 //!
@@ -43,14 +43,16 @@
 //! within about 2^-12 of the critical cosine, where dF/dcos is infinite, and at Rp's double
 //! zero at Brewster's angle) the oracle scores raw - kappa / 2, the raw error less what one
 //! rounding of the cosine explains; there the raw error stays below what that rounding
-//! explains: raw <= kappa / 2 + B with B = -2.7 (F, f32) / -2.6 (F, f64), -3.3 (Rs, Rp) and -1.3 (conductor, f32) / -1.0
+//! explains: raw <= kappa / 2 + B with B = -2.7 (F, f32) / -2.6 (F, f64), -3.3 (Rs, Rp) and -3.3 (conductor, f32) / -0.7
 //! (conductor, f64) (`docs/accuracy.md`). Points with eta within a few ulps of 1
 //! count as well conditioned (eta - 1 is exact) and are in the table above.
 //! The conductor carries N^2 - 1, s^2 = N^2 - sin^2, s (one Newton step), the squared
 //! moduli |N^2 - 1|^2 and |c + s|^2 and their quotient |r_perp|^2 in double words as well,
 //! since |r_perp|^2 = |N^2 - 1|^2 / |c + s|^4 would otherwise quadruple the roundings of s;
 //! its parallel term enters as a ratio of two positive sums that damps its own roundings by
-//! half, and F = |r_perp|^2 A / (A + B) is rounded once.
+//! half, and F = |r_perp|^2 A / (A + B) is rounded once. On `f32` and `f32x8` the conductor
+//! is instead evaluated in f64, where the same cancellation-free arrangement needs neither
+//! double words nor scalings, and rounded to f32 once.
 
 use crate::domain::{in_unit, nan_unless};
 use crate::dw::{Dw, pow2_nearest, single, two_sum};
@@ -407,129 +409,209 @@ pub fn dielectric<T: Real>(cos_theta_i: T, eta: T) -> T {
 /// c = 0 gives 1; eta = 1, k = 0 gives 0. NaN in any input, eta <= 0, k < 0 and infinite
 /// eta or k give NaN.
 ///
-/// Accuracy (module docs, "Accuracy"): within 3.5 ulps (f32, f32x8) / 3.9 ulps (f64, f64x4)
+/// On `f32` and `f32x8` all of the above is evaluated in f64 instead (`f32x8` as two `f64x4`
+/// halves, lane for lane the scalar operations) and rounded to f32 once: there the inputs'
+/// squares are exact and no product of f32 inputs leaves f64's normal range, so neither
+/// double words nor scalings are needed. The arrangement is that of [`conductor_fast`]:
+/// u = N^2 - 1 from (eta - 1)(eta + 1) - k^2, z = s^2 from whichever form adds the smaller
+/// terms, |s|^2 = |z|, and 2 Re(s) = h / w with (h, w) = (sqrt(2) t, 1) where Re z >= 0 and
+/// (sqrt(2) |Im z|, t) otherwise, t = sqrt(|z| + |Re z|), so that
+/// F = |u|^2 A w^3 / ((|c + s|^2 w)^2 (A + B) w) with both sums multiplied by w: two square
+/// roots and one division, every rounding 2^-53 (w and h are scaled by 2^-100 where
+/// |z| > 2^200, which keeps |N|^9 finite). F below f32's smallest normal number (N near 1)
+/// is rounded from normal numbers, as `beckmann::d`'s is, so no instruction meets a
+/// subnormal number.
+///
+/// Accuracy (module docs, "Accuracy"): within 0.7 ulps (f32, f32x8) / 3.9 ulps (f64, f64x4)
 /// of the correctly rounded value where a 1-ulp change of the cosine moves it by at most 8
-/// ulps (max 3.30 / 3.69 found by the oracle's deep search over the whole domain; 3.00 / 3.10
-/// with FMA); elsewhere (k near 0 at the critical angle) the raw error stays below what one
-/// rounding of the cosine explains (raw <= kappa / 2 - 1.3 in f32, kappa / 2 - 1.0 in f64).
-/// Cost: about 420 flops, 290 more than the same ratios in working
+/// ulps (max 0.50 / 3.69 found by the oracle's deep search over the whole domain; 3.10 for
+/// f64 with FMA); elsewhere (k near 0 at the critical angle) the raw error stays below what
+/// one rounding of the cosine explains (raw <= kappa / 2 - 3.3 in f32, kappa / 2 - 0.7 in
+/// f64). Cost on `f64`, `f64x4`: about 420 flops, 290 more than the same ratios in working
 /// precision (fifteen Dekker squares or products, a dozen double-word sums, one double-word
-/// quotient).
+/// quotient); on `f32`, `f32x8`: about 40 f64 operations, two of them square roots and one
+/// a division.
 #[inline]
 #[must_use]
 pub fn conductor<T: Real>(cos_theta_i: T, eta: T, k: T) -> T {
     let c = cos_theta_i.saturate();
-    let s2 = (T::ONE - c) * (T::ONE + c);
-    let big = eta.max(k);
-    let large = big.simd_gt(T::splat(CONDUCTOR_SCALE_HI));
-    let tiny_bound = T::EPSILON * T::EPSILON;
-    let tiny = big.simd_lt(tiny_bound);
-    let safe_big = T::select(big.simd_gt(T::ZERO), big, T::ONE);
-    // N / sigma with sigma = max(eta, k) (large), 1 (moderate) or max(eta, k) / 2^-46 (tiny);
-    // m = 1 / sigma where large, else 1 (the tiny case keeps the unit scale).
-    let up = tiny_bound / safe_big;
-    let (re, im, m) = (
-        T::select(large, eta / safe_big, T::select(tiny, eta * up, eta)),
-        T::select(large, k / safe_big, T::select(tiny, k * up, k)),
-        T::select(large, safe_big.recip(), T::ONE),
-    );
-    // Exact squares of the scaled inputs; u = N^2 - m^2 (= (N^2 - 1) / sigma^2) in double
-    // words, so that N near 1 keeps every digit of the small u.
-    let re2 = Dw::square(re);
-    let im2 = Dw::square(im);
-    let m2 = Dw::square(m);
-    let cm = c * m;
-    let cm2 = Dw::square(cm);
-    let n2_re = re2.add(im2.neg());
-    let u_re = n2_re.add(m2.neg());
-    let u_im = Dw::product(T::TWO * re, im);
-    // z = s^2 = N^2 - s2 m^2, as u + (c m)^2 or as N^2 - (m^2 - (c m)^2), whichever adds the
-    // smaller terms (the first for N near 1, the second for small N near normal incidence,
-    // where u + c^2 would cancel to nothing).
-    let s2m2 = m2.add(cm2.neg());
-    // eta = 1 exactly with k below 2^-40 (f32) / 2^-400 (f64): u = 2 i k - k^2 and (c m)^2
-    // would reach the subnormal range (their double words' low parts long before), so u is
-    // multiplied by L and c by sqrt(L), sqrt(L) the power of two nearest
-    // 1 / sqrt(max(2 k, c^2)) (exact scalings; z and s scale by L and sqrt(L), |u|^2 / |c + s|^4
-    // not at all, and the parallel factor below divides them out again).
-    let small_u = re.simd_eq(T::ONE)
-        & m.simd_eq(T::ONE)
-        & im.simd_lt(T::splat(if single::<T>() { pow2(-40) } else { pow2(-400) }));
-    let sqrt_l = pow2_nearest(
-        (T::TWO * im)
-            .max(c * c)
-            .sqrt()
-            .recip()
-            .min(T::splat(if single::<T>() { pow2(80) } else { pow2(600) })),
-    );
-    let sqrt_l = T::select(small_u, sqrt_l, T::ONE);
-    let k_l = im * sqrt_l;
-    let u_re = Dw::select(small_u, Dw::square(k_l).neg(), u_re);
-    let u_im = Dw::select(small_u, Dw::exact(T::TWO * k_l * sqrt_l), u_im);
-    let c_l = c * sqrt_l;
-    let cm = T::select(small_u, c_l, cm);
-    let cm2 = Dw::select(small_u, Dw::square(c_l), cm2);
-    let z_re = Dw::select(
-        small_u | (u_re.hi.abs() + cm2.hi).simd_le(n2_re.hi.abs() + s2m2.hi),
-        u_re.add(cm2),
-        n2_re.add(s2m2.neg()),
-    );
-    // s = sqrt(z): the working-precision root s0, then one Newton step s0 + (z - s0^2) / (2 s0)
-    // on the residual, which leaves s to about twice the working precision. The residual is
-    // about eps |z| (eps the unit roundoff) and needs only relative accuracy eps: its high
-    // parts cancel exactly (Sterbenz) once Re(s0^2)'s own rounding is kept by a Knuth sum.
-    let (s0_re, s0_im) = complex_sqrt(z_re.hi, u_im.hi);
-    let (sr2, si2) = (Dw::square(s0_re), Dw::square(s0_im));
-    let (d, de) = two_sum(sr2.hi, -si2.hi);
-    let r_re = ((z_re.hi - d) - de) + ((z_re.lo - sr2.lo) + si2.lo);
-    let w = Dw::product(T::TWO * s0_re, s0_im);
-    let r_im = (u_im.hi - w.hi) + (u_im.lo - w.lo);
-    let s0_abs2 = s0_re.mul_add(s0_re, s0_im * s0_im);
-    let has_root = s0_abs2.simd_gt(T::ZERO);
-    let den = T::TWO * T::select(has_root, s0_abs2, T::ONE);
-    let d_re = T::select(has_root, r_re.mul_add(s0_re, r_im * s0_im) / den, T::ZERO);
-    let d_im = T::select(
-        has_root,
-        r_im.mul_add(s0_re, -(r_re * s0_im)) / den,
-        T::ZERO,
-    );
-    // p = c + s (scaled: c m + s) in double words.
-    let (h, l) = two_sum(cm, s0_re);
-    let (h, e) = two_sum(h, d_re);
-    let p_re = Dw::norm(h, e + l);
-    let (h, e) = two_sum(s0_im, d_im);
-    let p_im = Dw { hi: h, lo: e };
-    // |r_perp|^2 = |u|^2 / |p|^4, after scaling p by the power of two lambda nearest
-    // 1 / max(|Re p|, |Im p|) and u by lambda^2 (exact; |u| <= |p|^2, since
-    // u = (s - c)(s + c) and Re s >= 0), so that neither fourth power overflows nor underflows.
-    let pmax = p_re.hi.abs().max(p_im.hi.abs());
-    let lambda = pow2_nearest(pmax).max(T::MIN_POSITIVE).recip();
-    let p_re = p_re.scale(lambda);
-    let p_im = p_im.scale(lambda);
-    let u_re = u_re.scale(lambda).scale(lambda);
-    let u_im = u_im.scale(lambda).scale(lambda);
-    let u_abs2 = Dw::abs2(u_re, u_im);
-    let p_abs2 = Dw::abs2(p_re, p_im);
-    let rs = div_or_zero(u_abs2, p_abs2.sq());
-    // |r_par|^2 = |r_perp|^2 |c s - s2|^2 / |c s + s2|^2 (r_par = -r_perp (c s - s2) /
-    // (c s + s2), from c^2 + s2 = 1 and s^2 + s2 = N^2), so that
-    // F = |r_perp|^2 (1 + rho) / 2 = |r_perp|^2 A / (A + B) with A = c^2 |s|^2 + s2^2 and
-    // B = 2 c s2 Re(s) (|c s +- s2|^2 = A +- B): two positive sums, whose rounding errors
-    // reach F damped by B / (A + B) <= 1/2. In scaled units divided by tau = max(c, m), so
-    // that grazing light on a huge N neither underflows nor divides 0 by 0.
-    let tau = c.max(m);
-    let (ch, s2mh) = (c / tau, s2 * (m / tau));
-    let inv_l = sqrt_l.recip();
-    let a = (ch * ch).mul_add(s0_abs2 * inv_l * inv_l, s2mh * s2mh);
-    let b = T::TWO * ch * s2mh * (s0_re * inv_l);
-    let ab = a + b;
-    // A > 0 for every valid input (s2 = 1 where c = 0); the guard keeps 0 / 0 out regardless.
-    let pos = ab.simd_gt(T::ZERO);
-    let q = T::select(pos, a / T::select(pos, ab, T::ONE), T::ONE);
-    // |r_perp|^2 q with one rounding (the product's error recovered exactly).
-    let f = rs.mul(Dw::exact(q)).value().min(T::ONE);
+    let f = T::via_f64([c, eta, k], Conductor, crate::real::sealed::Token::NEW);
     let ok = valid_eta(eta) & k.simd_ge(T::ZERO) & k.simd_le(T::MAX) & !cos_theta_i.is_nan();
     nan_unless(ok, f)
+}
+
+/// The F of [`conductor`] for the saturated cosine and eta, k as given (an invalid pair or a
+/// NaN cosine gives an unspecified value, which the caller replaces by NaN): double words in
+/// f64 and f64x4, one f64 evaluation rounded once in f32 and f32x8.
+#[derive(Clone, Copy)]
+struct Conductor;
+
+impl crate::real::sealed::Widened<3> for Conductor {
+    /// F of N near 1 falls below f32's smallest normal number (F = k^2 / 4 at c = 1, eta = 1).
+    const TINY: bool = true;
+
+    #[inline]
+    fn native<T: Real>(self, [c, eta, k]: [T; 3]) -> T {
+        let s2 = (T::ONE - c) * (T::ONE + c);
+        let big = eta.max(k);
+        let large = big.simd_gt(T::splat(CONDUCTOR_SCALE_HI));
+        let tiny_bound = T::EPSILON * T::EPSILON;
+        let tiny = big.simd_lt(tiny_bound);
+        let safe_big = T::select(big.simd_gt(T::ZERO), big, T::ONE);
+        // N / sigma with sigma = max(eta, k) (large), 1 (moderate) or max(eta, k) / 2^-46 (tiny);
+        // m = 1 / sigma where large, else 1 (the tiny case keeps the unit scale).
+        let up = tiny_bound / safe_big;
+        let (re, im, m) = (
+            T::select(large, eta / safe_big, T::select(tiny, eta * up, eta)),
+            T::select(large, k / safe_big, T::select(tiny, k * up, k)),
+            T::select(large, safe_big.recip(), T::ONE),
+        );
+        // Exact squares of the scaled inputs; u = N^2 - m^2 (= (N^2 - 1) / sigma^2) in double
+        // words, so that N near 1 keeps every digit of the small u.
+        let re2 = Dw::square(re);
+        let im2 = Dw::square(im);
+        let m2 = Dw::square(m);
+        let cm = c * m;
+        let cm2 = Dw::square(cm);
+        let n2_re = re2.add(im2.neg());
+        let u_re = n2_re.add(m2.neg());
+        let u_im = Dw::product(T::TWO * re, im);
+        // z = s^2 = N^2 - s2 m^2, as u + (c m)^2 or as N^2 - (m^2 - (c m)^2), whichever adds the
+        // smaller terms (the first for N near 1, the second for small N near normal incidence,
+        // where u + c^2 would cancel to nothing).
+        let s2m2 = m2.add(cm2.neg());
+        // eta = 1 exactly with k below 2^-40 (f32) / 2^-400 (f64): u = 2 i k - k^2 and (c m)^2
+        // would reach the subnormal range (their double words' low parts long before), so u is
+        // multiplied by L and c by sqrt(L), sqrt(L) the power of two nearest
+        // 1 / sqrt(max(2 k, c^2)) (exact scalings; z and s scale by L and sqrt(L), |u|^2 / |c + s|^4
+        // not at all, and the parallel factor below divides them out again).
+        let small_u = re.simd_eq(T::ONE)
+            & m.simd_eq(T::ONE)
+            & im.simd_lt(T::splat(if single::<T>() { pow2(-40) } else { pow2(-400) }));
+        let sqrt_l = pow2_nearest(
+            (T::TWO * im)
+                .max(c * c)
+                .sqrt()
+                .recip()
+                .min(T::splat(if single::<T>() { pow2(80) } else { pow2(600) })),
+        );
+        let sqrt_l = T::select(small_u, sqrt_l, T::ONE);
+        let k_l = im * sqrt_l;
+        let u_re = Dw::select(small_u, Dw::square(k_l).neg(), u_re);
+        let u_im = Dw::select(small_u, Dw::exact(T::TWO * k_l * sqrt_l), u_im);
+        let c_l = c * sqrt_l;
+        let cm = T::select(small_u, c_l, cm);
+        let cm2 = Dw::select(small_u, Dw::square(c_l), cm2);
+        let z_re = Dw::select(
+            small_u | (u_re.hi.abs() + cm2.hi).simd_le(n2_re.hi.abs() + s2m2.hi),
+            u_re.add(cm2),
+            n2_re.add(s2m2.neg()),
+        );
+        // s = sqrt(z): the working-precision root s0, then one Newton step s0 + (z - s0^2) / (2 s0)
+        // on the residual, which leaves s to about twice the working precision. The residual is
+        // about eps |z| (eps the unit roundoff) and needs only relative accuracy eps: its high
+        // parts cancel exactly (Sterbenz) once Re(s0^2)'s own rounding is kept by a Knuth sum.
+        let (s0_re, s0_im) = complex_sqrt(z_re.hi, u_im.hi);
+        let (sr2, si2) = (Dw::square(s0_re), Dw::square(s0_im));
+        let (d, de) = two_sum(sr2.hi, -si2.hi);
+        let r_re = ((z_re.hi - d) - de) + ((z_re.lo - sr2.lo) + si2.lo);
+        let w = Dw::product(T::TWO * s0_re, s0_im);
+        let r_im = (u_im.hi - w.hi) + (u_im.lo - w.lo);
+        let s0_abs2 = s0_re.mul_add(s0_re, s0_im * s0_im);
+        let has_root = s0_abs2.simd_gt(T::ZERO);
+        let den = T::TWO * T::select(has_root, s0_abs2, T::ONE);
+        let d_re = T::select(has_root, r_re.mul_add(s0_re, r_im * s0_im) / den, T::ZERO);
+        let d_im = T::select(
+            has_root,
+            r_im.mul_add(s0_re, -(r_re * s0_im)) / den,
+            T::ZERO,
+        );
+        // p = c + s (scaled: c m + s) in double words.
+        let (h, l) = two_sum(cm, s0_re);
+        let (h, e) = two_sum(h, d_re);
+        let p_re = Dw::norm(h, e + l);
+        let (h, e) = two_sum(s0_im, d_im);
+        let p_im = Dw { hi: h, lo: e };
+        // |r_perp|^2 = |u|^2 / |p|^4, after scaling p by the power of two lambda nearest
+        // 1 / max(|Re p|, |Im p|) and u by lambda^2 (exact; |u| <= |p|^2, since
+        // u = (s - c)(s + c) and Re s >= 0), so that neither fourth power overflows nor underflows.
+        let pmax = p_re.hi.abs().max(p_im.hi.abs());
+        let lambda = pow2_nearest(pmax).max(T::MIN_POSITIVE).recip();
+        let p_re = p_re.scale(lambda);
+        let p_im = p_im.scale(lambda);
+        let u_re = u_re.scale(lambda).scale(lambda);
+        let u_im = u_im.scale(lambda).scale(lambda);
+        let u_abs2 = Dw::abs2(u_re, u_im);
+        let p_abs2 = Dw::abs2(p_re, p_im);
+        let rs = div_or_zero(u_abs2, p_abs2.sq());
+        // |r_par|^2 = |r_perp|^2 |c s - s2|^2 / |c s + s2|^2 (r_par = -r_perp (c s - s2) /
+        // (c s + s2), from c^2 + s2 = 1 and s^2 + s2 = N^2), so that
+        // F = |r_perp|^2 (1 + rho) / 2 = |r_perp|^2 A / (A + B) with A = c^2 |s|^2 + s2^2 and
+        // B = 2 c s2 Re(s) (|c s +- s2|^2 = A +- B): two positive sums, whose rounding errors
+        // reach F damped by B / (A + B) <= 1/2. In scaled units divided by tau = max(c, m), so
+        // that grazing light on a huge N neither underflows nor divides 0 by 0.
+        let tau = c.max(m);
+        let (ch, s2mh) = (c / tau, s2 * (m / tau));
+        let inv_l = sqrt_l.recip();
+        let a = (ch * ch).mul_add(s0_abs2 * inv_l * inv_l, s2mh * s2mh);
+        let b = T::TWO * ch * s2mh * (s0_re * inv_l);
+        let ab = a + b;
+        // A > 0 for every valid input (s2 = 1 where c = 0); the guard keeps 0 / 0 out regardless.
+        let pos = ab.simd_gt(T::ZERO);
+        let q = T::select(pos, a / T::select(pos, ab, T::ONE), T::ONE);
+        // |r_perp|^2 q with one rounding (the product's error recovered exactly).
+        rs.mul(Dw::exact(q)).value().min(T::ONE)
+    }
+
+    #[inline]
+    fn wide<W: Real<Scalar = f64>>(self, [c, eta, k]: [W; 3]) -> W {
+        // The arrangement of `conductor_fast` without its scalings: f32 inputs, between 2^-149
+        // and 2^128, keep every product below (squares, |u|^2 ~ |N|^4, |c + s|^4 (A + B)
+        // ~ |N|^6 c^2) inside f64's normal range, so no power of two is needed. The squares of
+        // the inputs are exact, (eta - 1)(eta + 1) and 1 -+ c are exact factors, and every
+        // other step rounds once by 2^-53 with no cancellation left (sums of non-negative
+        // terms; z = s^2 from whichever form adds the smaller terms; 2 Re(s) without the
+        // difference |z| - |Re z| where Re z < 0), so F is within a few dozen units of 2^-53
+        // of itself before its one rounding to f32, except near the critical angle of a
+        // dielectric-like N, where one rounding of the cosine itself moves F by far more.
+        let k2 = k * k;
+        let n2_re = eta.mul_add(eta, -k2);
+        let u_re = (eta - W::ONE).mul_add(eta + W::ONE, -k2);
+        let u_im = W::TWO * eta * k;
+        let u_abs2 = u_re.mul_add(u_re, u_im * u_im);
+        let s2 = (W::ONE - c) * (W::ONE + c);
+        let c2 = c * c;
+        let z_re = W::select(c2.simd_le(n2_re), c.mul_add(c, u_re), n2_re - s2);
+        // s = sqrt(z), principal root (Press et al., "Numerical Recipes", section 5.5):
+        // |s|^2 = |z|, t = sqrt(|z| + |Re z|) = sqrt(2) sqrt((|z| + |Re z|) / 2), and
+        // 2 Re(s) = sqrt(2) t where Re z >= 0, sqrt(2) |Im z| / t otherwise. Written as
+        // h / w with (h, w) = (sqrt(2) t, 1) or (sqrt(2) |Im z|, t), so that |c + s|^2 =
+        // c (c + 2 Re s) + |s|^2 and A + B = A + c s2 2 Re(s) are multiplied by w and the
+        // one division left is the final one: F = |u|^2 A w^3 / ((|c + s|^2 w)^2 (A + B) w).
+        let a = z_re.abs();
+        let b = u_im.abs();
+        let norm = a.mul_add(a, b * b).sqrt();
+        let t = (norm + a).sqrt();
+        let root2 = W::splat(core::f64::consts::SQRT_2);
+        let pos = z_re.simd_ge(W::ZERO);
+        // h / w is unchanged by a common factor: 2^-100 where |z| > 2^200 (|N| above about
+        // 2^100) keeps the numerator's and the denominator's w^3 (up to |N|^9) below 2^900.
+        let lambda = W::select(
+            norm.simd_gt(W::splat(1.606_938_044_258_990_3e60)),
+            W::splat(7.888_609_052_210_118e-31),
+            W::ONE,
+        );
+        let h = root2 * W::select(pos, t, b * lambda);
+        let w = W::select(pos, W::ONE, t * lambda);
+        let pw = c.mul_add(c.mul_add(w, h), norm * w);
+        let a_par = c2.mul_add(norm, s2 * s2);
+        let abw = (c * s2).mul_add(h, a_par * w);
+        let ratio = (u_abs2 * a_par * (w * w * w)) / (pw * pw * abw);
+        // At c = 0 the ratio is 1 only to rounding: 1, or 0 without an interface (N = 1).
+        let no_interface = u_re.simd_eq(W::ZERO) & u_im.simd_eq(W::ZERO);
+        let grazing = W::select(no_interface, W::ZERO, W::ONE);
+        W::select(c.simd_gt(W::ZERO), ratio.min(W::ONE), grazing)
+    }
 }
 
 /// Exact unpolarized conductor Fresnel in working precision, the fast companion of

@@ -172,6 +172,8 @@ pub mod phong;
 pub mod sampling;
 #[cfg(feature = "tonemap")]
 pub mod tonemap;
+#[allow(dead_code)] // each feature uses a subset of the f64 evaluation of f32 kernels
+mod widen;
 
 pub use error::ParamError;
 

@@ -1027,7 +1027,7 @@ pub(crate) mod sealed {
         #[cfg_attr(not(feature = "beckmann"), allow(dead_code))]
         pub(crate) const NEW: Self = Self(());
     }
-    pub trait Sealed {
+    pub trait Sealed: Sized {
         /// 2^-t for t = 0 or t in [2^-52, 120] (f32 lanes) / [0, 1000] (f64 lanes), a normal
         /// number for every such t; NaN gives NaN; outside that range unspecified. Scalars and f64 lanes:
         /// `libm::exp2f` / `libm::exp2`; f32 lanes: within 2 ULP of `libm::exp2f` (1 ULP where
@@ -1035,11 +1035,45 @@ pub(crate) mod sealed {
         /// `tests/lanes/exp.rs`). For kernels whose exponent is known to be small and
         /// non-positive (the `_fast` Beckmann D).
         fn exp2_neg(self, token: Token) -> Self;
+        /// 2^n from its exponent bits, for `self` = 2^52 + 1023 + n (f64 types) or
+        /// 2^23 + 127 + n (f32 types), n an integer with 2^n a normal number: the biased
+        /// exponent sits in the low significand bits and is shifted into place. Outside that
+        /// range unspecified (no panic).
+        fn pow2_bits(self, token: Token) -> Self;
+        /// The kernel `k` on `x`: on `f32` and `f32x8` its `wide` form in f64 (`f64`, resp.
+        /// two `f64x4` halves), rounded to f32 once (`crate::widen`); on `f64` and `f64x4`
+        /// its `native` form.
+        fn via_f64<K: Widened<N>, const N: usize>(x: [Self; N], k: K, token: Token) -> Self;
+    }
+
+    /// A kernel with an f64 evaluation for single-precision inputs (`crate::widen`).
+    pub trait Widened<const N: usize>: Copy {
+        /// Whether a result may lie below f32's smallest normal number, so that the rounding
+        /// to f32 must avoid the subnormal range (`crate::widen::round_tiny_f32`).
+        const TINY: bool;
+        /// The kernel in the lane type's own arithmetic (taken by `f64` and `f64x4`).
+        fn native<T: super::Real>(self, x: [T; N]) -> T;
+        /// The kernel in f64 on inputs that are f32 values widened exactly, to within a
+        /// small relative error of the exact result (taken by `f32` and `f32x8`).
+        fn wide<W: super::Real<Scalar = f64>>(self, x: [W; N]) -> W;
     }
     impl Sealed for f32 {
         #[inline]
         fn exp2_neg(self, _: Token) -> Self {
             libm::exp2f(-self)
+        }
+        #[inline]
+        fn pow2_bits(self, _: Token) -> Self {
+            f32::from_bits(self.to_bits() << 23)
+        }
+        #[inline]
+        fn via_f64<K: Widened<N>, const N: usize>(x: [Self; N], k: K, _: Token) -> Self {
+            let y = k.wide::<f64>(x.map(f64::from));
+            if K::TINY {
+                crate::widen::round_tiny_f32(y)
+            } else {
+                crate::widen::round_f32(y)
+            }
         }
     }
     impl Sealed for f64 {
@@ -1047,17 +1081,52 @@ pub(crate) mod sealed {
         fn exp2_neg(self, _: Token) -> Self {
             libm::exp2(-self)
         }
+        #[inline]
+        fn pow2_bits(self, _: Token) -> Self {
+            f64::from_bits(self.to_bits() << 52)
+        }
+        #[inline]
+        fn via_f64<K: Widened<N>, const N: usize>(x: [Self; N], k: K, _: Token) -> Self {
+            k.native(x)
+        }
     }
     impl Sealed for super::f32x8 {
         #[inline]
         fn exp2_neg(self, _: Token) -> Self {
             super::exp2_neg_f32x8(self)
         }
+        #[inline]
+        fn pow2_bits(self, _: Token) -> Self {
+            Self::from_bits(self.to_bits() << 23_u32)
+        }
+        #[inline]
+        fn via_f64<K: Widened<N>, const N: usize>(x: [Self; N], k: K, _: Token) -> Self {
+            let lo = k.wide(x.map(|v| super::widen_half(v, 0)));
+            let hi = k.wide(x.map(|v| super::widen_half(v, 4)));
+            if K::TINY {
+                let ((big_lo, small_lo), (big_hi, small_hi)) =
+                    (super::split_tiny(lo), super::split_tiny(hi));
+                let big = super::narrow(big_lo, big_hi).to_bits();
+                let small = super::narrow(small_lo, small_hi).to_bits();
+                // `crate::widen::round_tiny_f32`'s join, lane by lane.
+                Self::from_bits((big + small) - wide::u32x8::splat(0x0100_0000))
+            } else {
+                super::narrow(lo, hi)
+            }
+        }
     }
     impl Sealed for super::f64x4 {
         #[inline]
         fn exp2_neg(self, _: Token) -> Self {
             super::f64x4::new(self.to_array().map(|t| libm::exp2(-t)))
+        }
+        #[inline]
+        fn pow2_bits(self, _: Token) -> Self {
+            Self::from_bits(self.to_bits() << 52_u64)
+        }
+        #[inline]
+        fn via_f64<K: Widened<N>, const N: usize>(x: [Self; N], k: K, _: Token) -> Self {
+            k.native(x)
         }
     }
 }
@@ -1083,6 +1152,45 @@ fn exp2_neg_f32x8(t: f32x8) -> f32x8 {
     // 2^-n: biased exponent 127 - n in [7, 127].
     let biased = c(127.0 + 8_388_608.0) - n;
     p * f32x8::from_bits(biased.to_bits() << 23_u32)
+}
+
+/// Lanes `at..at + 4` of `v` widened to f64 (exactly).
+#[inline(always)]
+fn widen_half(v: f32x8, at: usize) -> f64x4 {
+    let a = v.to_array();
+    f64x4::new([
+        f64::from(a[at]),
+        f64::from(a[at + 1]),
+        f64::from(a[at + 2]),
+        f64::from(a[at + 3]),
+    ])
+}
+
+/// The two normal parts of y >= 0 that `crate::widen::round_tiny_f32` rounds to f32 and
+/// joins: (max(y, 2^-126), min(y, 2^-126) + 2^-126), by `vmaxpd` / `vminpd` (NaN lanes give
+/// an unspecified value, which the kernels replace), as `f64::max` / `f64::min` on the scalar
+/// path.
+#[inline(always)]
+fn split_tiny(y: f64x4) -> (f64x4, f64x4) {
+    let m = f64x4::splat(crate::widen::F32_MIN_POSITIVE);
+    (y.fast_max(m), y.fast_min(m) + m)
+}
+
+/// The eight lanes of `lo` and `hi` rounded to f32 (to nearest, ties to even).
+#[inline(always)]
+#[allow(clippy::cast_possible_truncation)] // the rounding is the point
+fn narrow(lo: f64x4, hi: f64x4) -> f32x8 {
+    let (l, h) = (lo.to_array(), hi.to_array());
+    f32x8::new([
+        l[0] as f32,
+        l[1] as f32,
+        l[2] as f32,
+        l[3] as f32,
+        h[0] as f32,
+        h[1] as f32,
+        h[2] as f32,
+        h[3] as f32,
+    ])
 }
 
 impl_real_lanes!(f32x8, f32, 8, 32);

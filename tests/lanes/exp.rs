@@ -102,11 +102,12 @@ fn exp_ftz_is_exp_with_subnormal_results_flushed_on_every_127th_bit_pattern() {
 
 /// On x86-64 the MXCSR flags record, per thread, whether any SSE/AVX instruction met a
 /// subnormal operand (DE) or produced a tiny result (UE): each such instruction costs a
-/// microcode assist. `exp_ftz` on f32x8 lanes and `beckmann::d_fast` on every lane type raise
-/// neither for normal inputs (and 0), across every 127th f32 bit pattern and a (cosine, alpha)
-/// grid with cosines from 2^-149 to 1. This is the only `unsafe` in the crate's tests: reading
+/// microcode assist. `exp_ftz` on f32x8 lanes, `beckmann::d_fast` on every lane type and
+/// `beckmann::d` and `fresnel::conductor` on `f32` and `f32x8` (evaluated in f64, their
+/// subnormal results made from normal ones) raise neither for normal inputs (and 0), across every 127th f32 bit pattern
+/// and a (cosine, alpha) grid with cosines from 2^-149 to 1. This is the only `unsafe` in the crate's tests: reading
 /// and clearing the flag register.
-#[cfg(all(target_arch = "x86_64", feature = "beckmann"))]
+#[cfg(all(target_arch = "x86_64", feature = "beckmann", feature = "fresnel"))]
 #[test]
 #[allow(deprecated)]
 fn normal_inputs_meet_no_subnormal_number() {
@@ -147,12 +148,55 @@ fn normal_inputs_meet_no_subnormal_number() {
             let (cv, av) = std::hint::black_box((f32x8::new(c32), f32x8::splat(a as f32)));
             std::hint::black_box(beckmann::d_fast(cv, av));
             assert!(!flagged(), "f32x8 d_fast({c32:?}, {a}) met a subnormal");
+            clear();
+            std::hint::black_box(beckmann::d(cv, av));
+            assert!(!flagged(), "f32x8 d({c32:?}, {a}) met a subnormal");
+            for &v in &c32 {
+                clear();
+                let (cs, as_) = std::hint::black_box((v, a as f32));
+                std::hint::black_box(beckmann::d(cs, as_));
+                assert!(!flagged(), "f32 d({v:e}, {a}) met a subnormal");
+            }
             for q in c.chunks(4) {
                 let c64: [f64; 4] = core::array::from_fn(|l| q.get(l).copied().unwrap_or(0.0));
                 clear();
                 let (cv, av) = std::hint::black_box((f64x4::new(c64), <f64x4 as Real>::splat(a)));
                 std::hint::black_box(beckmann::d_fast(cv, av));
                 assert!(!flagged(), "f64x4 d_fast({c64:?}, {a}) met a subnormal");
+            }
+            checked += 8;
+        }
+    }
+    // The exact conductor on f32 and f32x8 (evaluated in f64) where F falls into f32's
+    // subnormal range: N within a few ulps of 1, k down to the smallest normal f32.
+    let iors: [(f32, f32); 6] = [
+        (1.0, 1e-20),
+        (1.0, 1e-30),
+        (1.0, f32::MIN_POSITIVE),
+        (1.000_000_1, 0.0),
+        (0.999_999_94, 1e-25),
+        (0.2, 3.0),
+    ];
+    for (eta, k) in iors {
+        for c in cosines.chunks(8) {
+            let c32: [f32; 8] = core::array::from_fn(|l| c.get(l).map_or(0.0, |&v| v as f32));
+            let c32 = c32.map(|v| if v.is_normal() { v } else { 0.0 });
+            clear();
+            let (cv, ev, kv) =
+                std::hint::black_box((f32x8::new(c32), f32x8::splat(eta), f32x8::splat(k)));
+            std::hint::black_box(brdf::fresnel::conductor(cv, ev, kv));
+            assert!(
+                !flagged(),
+                "f32x8 conductor({c32:?}, {eta}, {k}) met a subnormal"
+            );
+            for &v in &c32 {
+                clear();
+                let (cs, es, ks) = std::hint::black_box((v, eta, k));
+                std::hint::black_box(brdf::fresnel::conductor(cs, es, ks));
+                assert!(
+                    !flagged(),
+                    "f32 conductor({v:e}, {eta}, {k}) met a subnormal"
+                );
             }
             checked += 8;
         }

@@ -1,0 +1,161 @@
+//! Single-precision kernels evaluated in double precision and rounded once.
+//!
+//! An exact `f32` kernel must keep its intermediate roundings far below half an ULP of f32.
+//! Double-word `f32` arithmetic (`crate::dw`) does that at about ten operations per rounding
+//! recovered; `f64` does it at one, because an `f32` input widened to `f64` is exact, its
+//! square and the product of two of them are exact (48 significant bits), and every later
+//! rounding costs 2^-53 relative, 2^-29 of an ULP of f32. No `f32` input can overflow or
+//! underflow `f64` through a few such products either (f32's range is 2^±128, f64's
+//! 2^±1022), so the scalings that keep an `f32` double word out of the subnormal range are
+//! not needed. The result, within a few units of 2^-53 relative of the exact value (plus what
+//! a kernel's own approximations add, such as [`exp_neg_split`]'s), is then rounded to `f32` once:
+//! within 0.5 ULP plus that small relative error.
+//!
+//! A kernel that takes this path implements [`Widened`](crate::real::sealed::Widened) twice:
+//! `wide`, generic over `f64` and `f64x4`, and `native`, its double-word form for `f64` and
+//! `f64x4` themselves. [`Real`]'s sealed hook `via_f64` picks one per lane type: `f32` runs
+//! `wide::<f64>`, `f32x8` runs `wide::<f64x4>` on each half of its lanes (the same operations
+//! lane for lane, so the lanes equal the scalar results bit for bit), `f64` and `f64x4` run
+//! `native`.
+//!
+//! Rounding into the subnormal range: on x86, converting an `f64` to an `f32` subnormal costs
+//! a microcode assist on many cores, as does any instruction with a subnormal operand or
+//! result. [`round_tiny_f32`] therefore rounds two normal numbers instead of y:
+//! max(y, 2^-126), and min(y, 2^-126) + 2^-126, which for y below 2^-126 lies in
+//! [2^-126, 2^-125], where f32's spacing is 2^-149, the spacing of its subnormals, so the
+//! conversion rounds y + 2^-126 exactly as it would round y, and subtracting 2^-126's bit
+//! pattern (0x0080_0000) from the rounded bits gives y's subnormal `f32`. Adding the two bit
+//! patterns and subtracting those of 2^-126 and 2^-125 (the parts where y is normal) gives
+//! fl32(y) in both cases without a comparison, and no instruction meets a subnormal number.
+
+use crate::real::Real;
+
+/// 2^-126, the smallest normal `f32` (also for the lanes' `split_tiny` in `crate::real`).
+pub(crate) const F32_MIN_POSITIVE: f64 = 1.175_494_350_822_287_5e-38;
+
+/// y rounded to f32, to nearest with ties to even (`as`): `f32` and `f32x8` results that
+/// cannot be subnormal.
+#[inline]
+#[must_use]
+#[allow(clippy::cast_possible_truncation)] // the rounding is the point
+pub(crate) fn round_f32(y: f64) -> f32 {
+    y as f32
+}
+
+/// y >= 0 rounded to f32 (to nearest, ties to even) without a subnormal operand or result
+/// in any instruction: the two parts max(y, 2^-126) and min(y, 2^-126) + 2^-126 are normal
+/// and rounded to f32; where y >= 2^-126 they round to fl32(y) and 2^-125, where y < 2^-126 to
+/// 2^-126 and fl32(y + 2^-126), whose bits less 2^-126's are those of fl32(y) (module docs);
+/// so the sum of the two bit patterns less 2^-125's is fl32(y)'s in both cases, without a
+/// comparison. `f32x8` does the same lane by lane (`crate::real`). A NaN y gives an
+/// unspecified value: the kernels map NaN input to NaN after this step.
+#[inline]
+#[must_use]
+pub(crate) fn round_tiny_f32(y: f64) -> f32 {
+    let m = F32_MIN_POSITIVE;
+    let big = round_f32(y.max(m)).to_bits();
+    let small = round_f32(y.min(m) + m).to_bits();
+    f32::from_bits(big.wrapping_add(small).wrapping_sub(0x0100_0000))
+}
+
+/// 1.5 2^52: adding it to a value below 2^51 in magnitude rounds the value to an integer
+/// (ties to even) in the low significand bits, and subtracting it again leaves that integer.
+const ROUND: f64 = 6_755_399_441_055_744.0;
+/// 2^52 + 1023: adding it to an integer n in [-1022, 1023] puts 1023 + n, the biased
+/// exponent of 2^n, in the low significand bits.
+const BIAS: f64 = 4_503_599_627_371_519.0;
+
+/// Coefficients of e^-r on [-ln(2) / 2, ln(2) / 2], lowest first: the degree-6 polynomial
+/// interpolating e^-r at the seven Chebyshev nodes of that interval (computed at 120 bits
+/// with mpmath, then rounded to f64; near the minimax polynomial), relative error below
+/// 2.6e-9 over the interval (`exp_neg_split_is_within_its_stated_error` below), 0.04 ULP of
+/// f32. One degree more would cost a multiply-add per four lanes for 0.04 ULP less.
+const EXP_NEG: [f64; 7] = [
+    1.0,
+    -1.000_000_037_716_214,
+    0.500_000_004_711_775_7,
+    -0.166_664_155_146_532_77,
+    0.041_666_352_896_775_16,
+    -0.008_375_126_398_153_335,
+    0.001_394_110_843_397_267_4,
+];
+
+/// e^-x on f64 lanes as (p, 2^-k), for x in [0, 700]: k = round(x log2(e)) and
+/// x = k ln 2 + r, |r| <= ln(2) / 2, e^-r = p by the polynomial [`EXP_NEG`] in Estrin's
+/// scheme (three levels of multiply-adds instead of six in a row), and 2^-k built from its
+/// exponent bits, so that the caller multiplies p last, with factors of its own formed
+/// while p is evaluated. Relative error of p 2^-k below 2.6e-9 (an accuracy for `f32`
+/// results, 0.04 ULP of f32, against 1.1e-16 for a full `f64` exponential), no branch,
+/// every intermediate a normal number (or 0). r is x - k fl(ln 2) in one multiply-add: the
+/// rounding of ln 2 costs k 2.3e-17 <= 2.4e-14 absolute in r (k <= 1010), and without a
+/// fused multiply-add the product's rounding at most 7.8e-14 more. NaN gives NaN; outside
+/// [0, 700] unspecified.
+#[inline]
+#[must_use]
+pub(crate) fn exp_neg_split<W: Real<Scalar = f64>>(x: W) -> (W, W) {
+    let k = x.mul_add(W::splat(core::f64::consts::LOG2_E), W::splat(ROUND)) - W::splat(ROUND);
+    let r = k.mul_add(-W::splat(core::f64::consts::LN_2), x);
+    let c = |i: usize| W::splat(EXP_NEG[i]);
+    let r2 = r * r;
+    let p01 = c(1).mul_add(r, c(0));
+    let p23 = c(3).mul_add(r, c(2));
+    let p45 = c(5).mul_add(r, c(4));
+    let p03 = p23.mul_add(r2, p01);
+    let p46 = c(6).mul_add(r2, p45);
+    let p = p46.mul_add(r2 * r2, p03);
+    (
+        p,
+        (W::splat(BIAS) - k).pow2_bits(crate::real::sealed::Token::NEW),
+    )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// p 2^-k within 2.6e-9 (relative) of libm's e^-x over [0, 700]: a dense sweep of [0, 2]
+    /// and 10^6 steps across the whole range, every product a normal number.
+    #[test]
+    fn exp_neg_split_is_within_its_stated_error() {
+        let mut worst = 0.0f64;
+        let mut check = |x: f64| {
+            let (p, two_k) = exp_neg_split(x);
+            let want = libm::exp(-x);
+            let got = p * two_k;
+            assert!(got.is_normal() && two_k.is_normal(), "e^-{x}: {got:e}");
+            worst = worst.max((got / want - 1.0).abs());
+        };
+        for i in 0..=200_000 {
+            check(f64::from(i) * 1e-5);
+        }
+        for i in 0..=1_000_000 {
+            check(f64::from(i) * 7e-4);
+        }
+        check(f64::MIN_POSITIVE);
+        assert!(exp_neg_split(f64::NAN).0.is_nan());
+        assert!(worst < 2.6e-9, "{worst:e}");
+    }
+
+    /// `round_tiny_f32` is `as f32` (to nearest, ties to even) on 0, on every f32 subnormal
+    /// and the normals up to 2^-125 with the f64 values between them (ties included), and on
+    /// a sweep of larger values.
+    #[test]
+    fn round_tiny_f32_rounds_as_the_conversion_does() {
+        let check = |y: f64| {
+            assert_eq!(round_tiny_f32(y).to_bits(), round_f32(y).to_bits(), "{y:e}");
+        };
+        check(0.0);
+        for bits in 0..0x0100_0100u32 {
+            let lo = f64::from(f32::from_bits(bits));
+            let hi = f64::from(f32::from_bits(bits + 1));
+            for t in [0.0, 0.25, 0.5, 0.75] {
+                check(lo + (hi - lo) * t);
+            }
+        }
+        let mut y = 1e-40f64;
+        while y < 1e38 {
+            check(y);
+            y *= 1.000_37;
+        }
+    }
+}
