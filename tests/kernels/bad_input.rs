@@ -2519,6 +2519,18 @@ const NOT_KERNELS: &[(&str, &str)] = &[
         "batch::run_f64",
         "applies a kernel over slices (the kernel keeps the rule)",
     ),
+    (
+        "batch::par_run",
+        "applies a kernel over slices on all cores (the kernel keeps the rule)",
+    ),
+    (
+        "batch::par_run_f32",
+        "applies a kernel over slices on all cores (the kernel keeps the rule)",
+    ),
+    (
+        "batch::par_run_f64",
+        "applies a kernel over slices on all cores (the kernel keeps the rule)",
+    ),
     ("ibl::dfg::dfg", "f64 quadrature of one table entry"),
     ("ibl::dfg::table", "table builder into a caller's buffer"),
     (
