@@ -42,6 +42,10 @@ pub struct Figures {
     pub identical: usize,
     /// Largest ULP distance from the CPU's `f32`.
     pub max_ulp: u64,
+    /// Largest ULP distance over the values whose row's arguments and whose GPU and CPU
+    /// results are all 0 or normal `f32` numbers: where no flush of a subnormal to 0 (which
+    /// WGSL allows, and GPUs do) can be the cause.
+    pub max_ulp_normal: u64,
     /// The bound at the row of the largest ULP distance, in ULP of the CPU value.
     pub bound_ulp_at_max: f64,
     /// Smallest bound over the compared values, in ULP of the CPU value.
@@ -183,7 +187,10 @@ pub fn run_kernel(gpu: &Gpu, twin: &Twin, families: &[Family], rows: &[Vec<f64>]
     #[allow(clippy::cast_possible_truncation)]
     let inputs: Vec<f32> = rows.iter().flatten().map(|&x| x as f32).collect();
     let gpu_out = gpu.run(&compute_shader(twin, families), &inputs, rows.len(), no);
+    let normal = |x: f64| x == 0.0 || x.abs() >= f64::from(f32::MIN_POSITIVE);
     for (i, row) in rows.iter().enumerate() {
+        #[allow(clippy::cast_possible_truncation)]
+        let row_normal = row.iter().all(|&x| normal(f64::from(x as f32)));
         let cpu = match cpu_row(twin, &mut interp, row) {
             Ok(c) => c,
             Err(why) => {
@@ -226,6 +233,9 @@ pub fn run_kernel(gpu: &Gpu, twin: &Twin, families: &[Family], rows: &[Vec<f64>]
             let ulp = ulp_distance(g, c32);
             if ulp == 0 {
                 fig.identical += 1;
+            }
+            if row_normal && normal(f64::from(g)) && normal(f64::from(c32)) {
+                fig.max_ulp_normal = fig.max_ulp_normal.max(ulp);
             }
             let unit = ulp32(f64::from(c32));
             let bound_ulp = allowed / unit;
@@ -281,20 +291,24 @@ pub fn markdown(adapter: &str, figs: &[Figures], without: &[&str]) -> String {
          {RANDOM_ROWS} random rows and up to {NEAR_END_ROWS} rows with cosines near 0 and 1.\n\n\
          Each value g is held to |g - c32| <= B + |X - c32|: B the bound the WGSL accuracy \
          table gives the twin's form at that input, X the form's exact value, c32 the CPU's \
-         f32 result; bounds in ULP of c32.\n\n\
-         | kernel | rows | compared | bit-identical | max ULP | bound at max (ULP) | \
-         min bound (ULP) | max measured / bound | excluded | outside bound |\n\
-         |---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n",
+         f32 result; bounds in ULP of c32. \"max ULP, normal\" is the largest distance over \
+         the values whose arguments and results (GPU and CPU) are all 0 or normal, where no \
+         flush of a subnormal to 0 is involved.\n\n\
+         | kernel | rows | compared | bit-identical | max ULP | max ULP, normal | \
+         bound at max (ULP) | min bound (ULP) | max measured / bound | excluded | \
+         outside bound |\n\
+         |---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n",
         date = today_utc()
     );
     for f in figs {
         s += &format!(
-            "| `{}` | {} | {} | {} | {} | {} | {} | {:.3} | {} | {} |\n",
+            "| `{}` | {} | {} | {} | {} | {} | {} | {} | {:.3} | {} | {} |\n",
             f.path,
             f.rows,
             f.compared,
             share(f.identical, f.compared),
             f.max_ulp,
+            f.max_ulp_normal,
             ulps(f.bound_ulp_at_max),
             ulps(f.min_bound_ulp),
             f.max_ratio,
@@ -336,11 +350,11 @@ pub fn markdown(adapter: &str, figs: &[Figures], without: &[&str]) -> String {
 pub fn csv(figs: &[Figures]) -> String {
     let mut s = String::from(
         "kernel,rows,compared,bit_identical,max_ulp,bound_ulp_at_max,min_bound_ulp,\
-         max_ratio,excluded,outside_bound\n",
+         max_ratio,excluded,outside_bound,max_ulp_normal\n",
     );
     for f in figs {
         s += &format!(
-            "{},{},{},{},{},{},{},{},{},{}\n",
+            "{},{},{},{},{},{},{},{},{},{},{}\n",
             f.path,
             f.rows,
             f.compared,
@@ -350,7 +364,8 @@ pub fn csv(figs: &[Figures]) -> String {
             f.min_bound_ulp,
             f.max_ratio,
             f.excluded_total(),
-            f.outside + f.twin_differs
+            f.outside + f.twin_differs,
+            f.max_ulp_normal
         );
     }
     s

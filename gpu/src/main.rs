@@ -46,9 +46,11 @@ fn main() -> ExitCode {
     for t in &with {
         let f = run_kernel(&gpu, t, &fams, &rows(t.kernel));
         println!(
-            "{:40} max {:>6} ULP  identical {:>6.2}%  max/bound {:.3}  excluded {:>5}  outside {}",
+            "{:40} max {:>6} ULP ({:>6} on normal numbers)  identical {:>6.2}%  max/bound {:.3}  \
+             excluded {:>5}  outside {}",
             f.path,
             f.max_ulp,
+            f.max_ulp_normal,
             100.0 * f.identical as f64 / f.compared.max(1) as f64,
             f.max_ratio,
             f.excluded_total(),

@@ -25,6 +25,8 @@ struct Row {
     compared: f64,
     identical: f64,
     max_ulp: f64,
+    /// The same over values with normal arguments and results (NaN in older snapshots).
+    max_ulp_normal: f64,
     ratio: f64,
     excluded: f64,
     outside: f64,
@@ -58,6 +60,7 @@ fn read(dir: &Path) -> Option<Snapshot> {
         col("excluded")?,
         col("outside_bound")?,
     );
+    let cn = col("max_ulp_normal");
     for l in lines {
         let f: Vec<&str> = l.split(',').collect();
         let num = |i: usize| {
@@ -70,6 +73,7 @@ fn read(dir: &Path) -> Option<Snapshot> {
             compared: num(cc),
             identical: num(ci),
             max_ulp: num(cu),
+            max_ulp_normal: cn.map_or(f64::NAN, num),
             ratio: num(cr),
             excluded: num(ce),
             outside: num(co),
@@ -147,7 +151,10 @@ pub fn gpu_section() {
          propagates the per-operation allowances through the twin's naga IR); inputs where \
          WGSL promises nothing are excluded and counted. Snapshots are committed by \
          `brdf-gpu-equiv --out gpu/results/<adapter>` (`gpu/device/run.sh` on a machine with \
-         only a GPU driver); this section reads them.\n"
+         only a GPU driver); this section reads them. \"Max ULP, normal\" is the largest \
+         distance where every argument and both results are 0 or normal `f32` numbers: GPUs \
+         flush subnormals to 0, which WGSL allows, and a flushed subnormal argument can move a \
+         result by any amount (a lobe of n.h = 1.4e-45 becomes the lobe of n.h = 0).\n"
     );
     outln!(
         "| snapshot | adapter and driver | date | kernels | max measured / bound | values outside the bound |"
@@ -171,10 +178,11 @@ pub fn gpu_section() {
     let mut rule = String::from("|---|");
     for s in &snaps {
         head.push_str(&format!(
-            " {0}: max ULP | {0}: bit-identical | {0}: max / bound | {0}: excluded |",
+            " {0}: max ULP | {0}: max ULP, normal | {0}: bit-identical | {0}: max / bound \
+             | {0}: excluded |",
             s.name
         ));
-        rule.push_str("---:|---:|---:|---:|");
+        rule.push_str("---:|---:|---:|---:|---:|");
     }
     outln!("{head}");
     outln!("{rule}");
@@ -183,13 +191,14 @@ pub fn gpu_section() {
         for s in &snaps {
             match s.rows.iter().find(|r| r.kernel == r0.kernel) {
                 Some(r) => line.push_str(&format!(
-                    " {} | {:.1}% | {:.3} | {} |",
+                    " {} | {} | {:.1}% | {:.3} | {} |",
                     fmt_ulp(r.max_ulp),
+                    fmt_ulp(r.max_ulp_normal),
                     100.0 * r.identical / r.compared.max(1.0),
                     r.ratio,
                     r.excluded
                 )),
-                None => line.push_str(" - | - | - | - |"),
+                None => line.push_str(" - | - | - | - | - |"),
             }
         }
         outln!("{line}");
