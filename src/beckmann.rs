@@ -530,8 +530,8 @@ impl<T: Real> Microfacet<T> for Beckmann<T> {
 ///   record one): within 0.7 ULP (f32, f32x8; 0.53 found), the polynomial's 0.04 included.
 ///
 /// Measured by the MPFR oracle (module docs). Run time on `f32x8` (native build, one core of an
-/// AMD EPYC (Zen 4), 10^6 uniform cosines through [`crate::batch::run_f32`]): 1.61 ms, 2.3x
-/// [`d_fast`] and 2.55x Mitsuba 3's `eval` on the same batch (`bench/mitsuba/compare.py --n
+/// AMD EPYC (Zen 4), 10^6 uniform cosines through [`crate::batch::run_f32`]): 1.55 ms, 2.2x
+/// [`d_fast`] and 2.54x Mitsuba 3's `eval` on the same batch (`bench/mitsuba/compare.py --n
 /// 1000000`, its README's table; 7.9x before the f64 evaluation).
 ///
 /// [`alpha_from_perceptual`]: crate::microfacet::alpha_from_perceptual
@@ -637,8 +637,8 @@ impl crate::real::sealed::Widened<2> for DIso {
 /// within 2 ULP of libm's: within 6 ULP of D.
 ///
 /// Run time (native build, one core of an AMD EPYC (Zen 4), 10^6 uniform cosines through
-/// [`crate::batch::run_f32`]): 1.8x a copy of the same bytes, 0.43x [`d`], 1.11x Mitsuba 3's
-/// `eval` on the same batch (`bench/mitsuba/compare.py --n 1000000`, its README's table).
+/// [`crate::batch::run_f32`]): 0.45x [`d`], 1.13x Mitsuba 3's `eval` on the same batch
+/// (`bench/mitsuba/compare.py --n 1000000`, its README's table).
 #[inline]
 #[must_use]
 pub fn d_fast<T: Real>(n_dot_h: T, alpha: T) -> T {
