@@ -518,8 +518,9 @@ impl<T: Real> Microfacet<T> for Beckmann<T> {
 ///   extra flops): within 1.7 ULP (f64) / 2.2 (f64x4), exp's own error included.
 /// - `f32`, `f32x8`: the same D is evaluated in f64 (`f32x8` as two `f64x4` halves, lane for
 ///   lane the scalar operations) and rounded to f32 once. There c^2 and alpha^2 are exact,
-///   q = 1 / (c^2 alpha^2) and E = (1 - c^2) q carry four roundings of 2^-53 (an absolute
-///   error below 1e-13 in E), e^-E = 2^-k e^-r with k = round(E / ln 2), |r| <= ln(2) / 2,
+///   q = (1 / alpha^2) / c^2 and E = (1 - c^2) q carry four roundings of 2^-53 (an absolute
+///   error below 1e-13 in E), e^-E = 2^-k e^-r with k = round(E / ln 2) (formed from
+///   (1 - c^2) log2(e) and q beside E), |r| <= ln(2) / 2,
 ///   e^-r by a degree-6 polynomial within 2.6e-9, and D = e^-E q^2 alpha^2 / pi with one
 ///   division in all. D is 0 where E > 200 (there D < 1e-74 for every alpha in
 ///   [ALPHA_MIN, ALPHA_MAX], so it rounds to 0), and a result below f32's smallest normal
@@ -529,8 +530,8 @@ impl<T: Real> Microfacet<T> for Beckmann<T> {
 ///   record one): within 0.7 ULP (f32, f32x8; 0.53 found), the polynomial's 0.04 included.
 ///
 /// Measured by the MPFR oracle (module docs). Run time on `f32x8` (native build, one core of an
-/// AMD EPYC (Zen 4), 10^6 uniform cosines through [`crate::batch::run_f32`]): 1.61 ms, 2.3x
-/// [`d_fast`] and 2.55x Mitsuba 3's `eval` on the same batch (`bench/mitsuba/compare.py --n
+/// AMD EPYC (Zen 4), 10^6 uniform cosines through [`crate::batch::run_f32`]): 1.55 ms, 2.2x
+/// [`d_fast`] and 2.54x Mitsuba 3's `eval` on the same batch (`bench/mitsuba/compare.py --n
 /// 1000000`, its README's table; 7.9x before the f64 evaluation).
 ///
 /// [`alpha_from_perceptual`]: crate::microfacet::alpha_from_perceptual
@@ -569,21 +570,26 @@ impl crate::real::sealed::Widened<2> for DIso {
 
     #[inline]
     fn wide<W: Real<Scalar = f64>>(self, [c, a]: [W; 2]) -> W {
-        // c^2 and alpha^2 are exact (48 significant bits), 1 - c^2 and c^2 alpha^2 round
-        // once, so E = (1 - c^2) / (c^2 alpha^2) is within 4 units of 2^-53 of itself, an
-        // absolute error below 1e-13 for E <= 200 (against exp's 6e-11 relative). c^2 alpha^2
-        // >= 2e-98 for every positive f32 c, so no intermediate is subnormal; at c = 0, q and
-        // E are +inf, and the lane is 0 through `big`.
+        // c^2 and alpha^2 are exact (48 significant bits); 1 - c^2, 1 / alpha^2 and
+        // q = (1 / alpha^2) / c^2 (the division takes c^2 directly, the shortest path to it)
+        // round once each, so E = (1 - c^2) q is within 4 units of 2^-53 of itself, an
+        // absolute error below 1e-13 for E <= 200 (against the polynomial's 2.6e-9 relative).
+        // c^2 >= 2e-90 for every positive f32 c, so no intermediate is subnormal; at c = 0, q
+        // and E are +inf, and the lane is 0 through `big`.
         let c2 = c * c;
         let a2 = a * a;
         let s2 = W::ONE - c2;
-        let q = (c2 * a2).recip();
+        let q = a2.recip() / c2;
         let e = s2 * q;
         // E > 200 exactly where c^2 (1 + 200 alpha^2) < 1 (up to roundings, which move the
         // edge by a few units of 2^-53 of E, where D is 0 in f32 on either side): tested on
         // c^2 while q is divided, so that the clamp costs the chain one select.
         let big = (c2 * (a2.mul_add(W::splat(E_ZERO_F32), W::ONE))).simd_lt(W::ONE);
-        let (p, two_k) = crate::widen::exp_neg_split(W::select(big, W::splat(E_ZERO_F32), e));
+        // k = round(E log2(e)) from (1 - c^2) log2(e) and q, beside E rather than after it,
+        // capped at round(200 log2(e)) = 289 where E is capped at 200.
+        let s2_log2e = s2 * W::splat(core::f64::consts::LOG2_E);
+        let k = crate::widen::round_product(s2_log2e, q).min(W::splat(289.0));
+        let (p, two_k) = crate::widen::exp_neg_split_k(W::select(big, W::splat(E_ZERO_F32), e), k);
         // D = e^-E / (pi c^4 alpha^2) = p 2^-k q^2 alpha^2 / pi, the factors other than p
         // multiplied (and zeroed where E > 200) while p is evaluated; for E <= 200 and
         // q <= 5e97 every factor and product lies between 1e-88 and 1e204.
@@ -631,8 +637,8 @@ impl crate::real::sealed::Widened<2> for DIso {
 /// within 2 ULP of libm's: within 6 ULP of D.
 ///
 /// Run time (native build, one core of an AMD EPYC (Zen 4), 10^6 uniform cosines through
-/// [`crate::batch::run_f32`]): 1.8x a copy of the same bytes, 0.43x [`d`], 1.11x Mitsuba 3's
-/// `eval` on the same batch (`bench/mitsuba/compare.py --n 1000000`, its README's table).
+/// [`crate::batch::run_f32`]): 0.45x [`d`], 1.13x Mitsuba 3's `eval` on the same batch
+/// (`bench/mitsuba/compare.py --n 1000000`, its README's table).
 #[inline]
 #[must_use]
 pub fn d_fast<T: Real>(n_dot_h: T, alpha: T) -> T {

@@ -93,7 +93,23 @@ const EXP_NEG: [f64; 7] = [
 #[inline]
 #[must_use]
 pub(crate) fn exp_neg_split<W: Real<Scalar = f64>>(x: W) -> (W, W) {
-    let k = x.mul_add(W::splat(core::f64::consts::LOG2_E), W::splat(ROUND)) - W::splat(ROUND);
+    exp_neg_split_k(x, round_product(x, W::splat(core::f64::consts::LOG2_E)))
+}
+
+/// round(a b) (ties to even, |a b| < 2^51), one multiply-add and one subtraction: k for
+/// [`exp_neg_split_k`] from x log2(e) = a b, whose factors a caller may choose to shorten its
+/// chain of dependent operations.
+#[inline]
+#[must_use]
+pub(crate) fn round_product<W: Real<Scalar = f64>>(a: W, b: W) -> W {
+    a.mul_add(b, W::splat(ROUND)) - W::splat(ROUND)
+}
+
+/// [`exp_neg_split`] with k given: any integer with |x - k ln 2| <= ln(2) / 2 + 10^-6 (the
+/// polynomial's error grows past the interval's end by less than 10^-12 there).
+#[inline]
+#[must_use]
+pub(crate) fn exp_neg_split_k<W: Real<Scalar = f64>>(x: W, k: W) -> (W, W) {
     let r = k.mul_add(-W::splat(core::f64::consts::LN_2), x);
     let c = |i: usize| W::splat(EXP_NEG[i]);
     let r2 = r * r;
