@@ -52,9 +52,10 @@
 //! borrows its parameters instead of moving them: see the `batch` module docs),
 //! `material_gltf` and `material_gltf_fast` (`material::gltf` and `gltf_fast` from the
 //! directions through `half_cosines`, base colour (0.9, 0.6, 0.3), metallic 0.5, roughness 0.5,
-//! three output slices), `material_textbook_scalar` (the same BRDF as a shader author
-//! transcribes Filament's `surface_brdf.fs` into scalar `f32`, one element at a time: a
-//! yardstick, not a crate kernel) and the copy floor on `f32x8` with `std::time::Instant`, after one untimed run of each,
+//! three output slices), `material_textbook_scalar` and `material_textbook_inlined` (the same
+//! BRDF as a shader author transcribes Filament's `surface_brdf.fs` into scalar `f32`, called
+//! once per element out of line, and inlined into the loop where LLVM may vectorize it:
+//! yardsticks, not crate kernels) and the copy floor on `f32x8` with `std::time::Instant`, after one untimed run of each,
 //! `BRDF_THROUGHPUT_RUNS` times (default 7), and prints one line per run:
 //! `time <kernel> <milliseconds>`. With `BRDF_THROUGHPUT_PARALLEL=1` every `batch` row runs
 //! through `batch::par_run_f32` on all cores (rayon's global pool; the textbook scalar row
@@ -416,8 +417,10 @@ const MATERIAL_ROUGHNESS: f32 = 0.5;
 /// scalar `f32`: `D_GGX` with 1 - (n.h)^2 formed as written (it cancels near n.h = 1),
 /// `V_SmithGGXCorrelated`, `F_Schlick` with pow5 by multiplications, `Fd_Lambert`, from the
 /// view and light directions (normal +z). Not a crate kernel: the textbook row of the timing
-/// mode, against which the crate's lanes are measured.
-#[inline(never)]
+/// mode, against which the crate's lanes are measured: called once per element
+/// (`material_textbook_scalar`, kept out of line so that it stays one element at a time) and
+/// inlined into the loop (`material_textbook_inlined`, which LLVM may vectorize on its own).
+#[inline(always)]
 fn material_textbook(v: [f32; 3], l: [f32; 3]) -> [f32; 3] {
     let s = [v[0] + l[0], v[1] + l[1], v[2] + l[2]];
     let inv = 1.0 / (s[0] * s[0] + s[1] * s[1] + s[2] * s[2]).sqrt();
@@ -467,6 +470,12 @@ fn run8<const I: usize, const O: usize>(
     }
 }
 
+/// [`material_textbook`] kept out of line: one call, one element.
+#[inline(never)]
+fn material_textbook_out_of_line(v: [f32; 3], l: [f32; 3]) -> [f32; 3] {
+    material_textbook(v, l)
+}
+
 /// The timing mode for `bench/mitsuba/compare.py` (module docs).
 fn timing_mode(path: &str) -> Result<(), String> {
     let bytes = std::fs::read(path).map_err(|e| format!("{path}: {e}"))?;
@@ -500,6 +509,7 @@ fn timing_mode(path: &str) -> Result<(), String> {
     let (eta, k) = (f32x8::splat(ETA as f32), f32x8::splat(K as f32));
     type Pass<'a> = Box<dyn FnMut(&mut [f32]) + 'a>;
     // The material rows' green and blue outputs, one pair per row.
+    let (mut g4, mut b4) = (vec![0.0f32; n], vec![0.0f32; n]);
     let (mut g1, mut b1, mut g2, mut b2, mut g3, mut b3) = (
         vec![0.0f32; n],
         vec![0.0f32; n],
@@ -651,11 +661,25 @@ fn timing_mode(path: &str) -> Result<(), String> {
             "material_textbook_scalar",
             Box::new(move |o: &mut [f32]| {
                 for i in 0..o.len() {
-                    let f =
-                        material_textbook([a[0][i], a[1][i], a[2][i]], [a[3][i], a[4][i], a[5][i]]);
+                    let f = material_textbook_out_of_line(
+                        [a[0][i], a[1][i], a[2][i]],
+                        [a[3][i], a[4][i], a[5][i]],
+                    );
                     o[i] = f[0];
                     g3[i] = f[1];
                     b3[i] = f[2];
+                }
+            }),
+        ),
+        (
+            "material_textbook_inlined",
+            Box::new(move |o: &mut [f32]| {
+                for i in 0..o.len() {
+                    let f =
+                        material_textbook([a[0][i], a[1][i], a[2][i]], [a[3][i], a[4][i], a[5][i]]);
+                    o[i] = f[0];
+                    g4[i] = f[1];
+                    b4[i] = f[2];
                 }
             }),
         ),

@@ -276,7 +276,8 @@ def main():
         path = os.path.join(tmp, "material_gltf.f32")
         if os.path.exists(path):
             exact = np.fromfile(path, dtype="<f4").astype(np.float64)
-            for row in ("material_textbook_scalar", "material_gltf", "material_gltf_fast"):
+            for row in ("material_textbook_scalar", "material_textbook_inlined", "material_gltf",
+                        "material_gltf_fast"):
                 p2 = os.path.join(tmp, f"{row}.f32")
                 if os.path.exists(p2):
                     ulp, _, sub = ref.errors(np.fromfile(p2, dtype="<f4"), exact)
@@ -324,17 +325,22 @@ def main():
     if "material_textbook_scalar" in med and "material_gltf" in med:
         t = med["material_textbook_scalar"]
         print(f"\n| glTF material ({args.n:.0e} elements, RGB, from the directions) | time "
-              f"| ns per element | textbook scalar f32 / this | against the exact tier (red) |")
-        print("|---|---|---|---|---|")
+              f"| ns per element | textbook scalar f32 (one call per element) / this "
+              f"| textbook inlined / this | against the exact tier (red) |")
+        print("|---|---|---|---|---|---|")
+        ti = med.get("material_textbook_inlined", float("nan"))
         for row, label in (("material_textbook_scalar",
-                            "textbook scalar f32 (Filament's surface_brdf.fs forms)"),
+                            "textbook scalar f32 (Filament's surface_brdf.fs forms), one call "
+                            "per element"),
+                           ("material_textbook_inlined",
+                            "the same textbook f32, inlined in the loop (LLVM may vectorize it)"),
                            ("material_gltf", "`material::gltf`, f32x8 (exact tier)"),
                            ("material_gltf_fast", "`material::gltf_fast`, f32x8 (working precision)")):
             if row not in med:
                 continue
             b = med[row]
             mx, md = material_err.get(row, (0.0, 0.0))
-            print(f"| {label} | {b:.2f} ms | {b * 1e6 / args.n:.2f} | {t / b:.2f} "
+            print(f"| {label} | {b:.2f} ms | {b * 1e6 / args.n:.2f} | {t / b:.2f} | {ti / b:.2f} "
                   f"| max {mx:.3g} ULP, median {md:.2g} |")
     if args.parallel:
         print(f"\n| kernel, all {args.threads} cores ({args.n:.0e} elements) | Mitsuba 3, "
