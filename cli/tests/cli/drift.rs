@@ -773,9 +773,18 @@ const EXCLUDED: &[(&str, &str)] = &[
     ("batch::run", "runs a caller's kernel over slices"),
     ("batch::run_f32", "runs a caller's kernel over slices"),
     ("batch::run_f64", "runs a caller's kernel over slices"),
-    ("batch::par_run", "runs a caller's kernel over slices on all cores"),
-    ("batch::par_run_f32", "runs a caller's kernel over slices on all cores"),
-    ("batch::par_run_f64", "runs a caller's kernel over slices on all cores"),
+    (
+        "batch::par_run",
+        "runs a caller's kernel over slices on all cores",
+    ),
+    (
+        "batch::par_run_f32",
+        "runs a caller's kernel over slices on all cores",
+    ),
+    (
+        "batch::par_run_f64",
+        "runs a caller's kernel over slices on all cores",
+    ),
     ("error::require", "validation helper of the constructors"),
     ("frame::same_hemisphere", "returns a lane mask, not a value"),
     (
