@@ -205,7 +205,7 @@ pub const BOUNDS: &[Bound] = &[
         -3.3,
         -3.2,
     ),
-    b("tonemap::agx_threejs", 0.7, 0.7, 0.7, 0.7),
+    b("tonemap::agx_threejs", 0.7, 1.0, 0.7, 1.0),
     b(
         "tonemap::agx_threejs (ill-conditioned)",
         -3.3,
