@@ -2,7 +2,7 @@
 //! (`ggx_conductor_rgb`) on the same inputs: within its documented relative bound per channel
 //! on f32 and f64 where F is well conditioned (k >= 0.1 or eta >= 1: no critical angle), lanes
 //! equal to scalars bit for bit, the exact tier's edges and bad input unchanged.
-#![cfg(feature = "ggx")]
+#![cfg(all(feature = "ggx", feature = "cook-torrance"))]
 
 use brdf::cook_torrance;
 use brdf::fresnel::ComplexIor;
