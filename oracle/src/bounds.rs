@@ -150,7 +150,7 @@ pub const BOUNDS: &[Bound] = &[
     ),
     b("diffuse::oren_nayar_fujii", 1.2, 1.2, 1.2, 1.2),
     b("diffuse::eon", 1.4, 1.3, 1.5, 1.4),
-    b("phong::normalized", 1.7, 1.8, 1.7, 1.8),
+    b("phong::normalized", 1.9, 1.8, 1.9, 1.8),
     b("phong::modified", 1.7, 1.7, 1.7, 1.7),
     b("phong::blinn_phong", 1.7, 1.6, 1.7, 1.6),
     b("phong::blinn_phong_normalization_exact", 1.0, 1.0, 1.0, 1.0),
