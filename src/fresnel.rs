@@ -113,8 +113,8 @@ pub fn ior_from_f0<T: Real>(f0: T) -> T {
 /// near c = 0.1 (`cargo test --test fresnel approximations:: -- --nocapture`).
 ///
 /// Domain: F0 in [0, 1] (outside, and NaN, give NaN); the cosine is clamped to [0, 1] (a
-/// negative one counts as grazing: 1), NaN gives NaN. Within 3.2 ulps (f32) / 3.5 ulps (f64)
-/// of the correctly rounded formula, lanes the same (max 3.05 / 3.25 found; module docs,
+/// negative one counts as grazing: 1), NaN gives NaN. Within 3.4 ulps (f32) / 3.5 ulps (f64)
+/// of the correctly rounded formula, lanes the same (max 3.23 / 3.25 found; module docs,
 /// "Accuracy"): the rounding error of 1 - c is
 /// recovered and added back to first order (5 flops), instead of being raised to the 5th
 /// power.

@@ -131,7 +131,7 @@ pub const BOUNDS: &[Bound] = &[
         -3.3,
         -0.7,
     ),
-    b("fresnel::schlick", 3.2, 3.4, 3.2, 3.4).fma(3.2, 3.5, 3.2, 3.5),
+    b("fresnel::schlick", 3.4, 3.5, 3.4, 3.5).fma(3.4, 3.5, 3.4, 3.5),
     b("fresnel::f0_from_ior", 0.7, 0.7, 0.7, 0.7),
     b("color::srgb_oetf", 0.7, 2.8, 0.7, 2.8),
     b("color::srgb_eotf", 0.7, 2.5, 0.7, 2.5),
