@@ -7,6 +7,8 @@
 //! | [`ndf_projected_area`] | integral D(m) cos(theta_m) dm | = 1 (normalization) |
 //! | [`smith_weak_furnace`] | integral G1(wo, m) D(m) max(0, wo.m) dm / cos(theta_o) | = 1 (Smith) |
 //! | [`reciprocity`] | max relative \|f(a, b) - f(b, a)\| over direction pairs | = 0 |
+//! | [`sphere`] | integral of f(w) dw over the whole sphere | |
+//! | [`directional_albedo_sphere`] | integral f(wo, wi) \|cos(theta_i)\| dwi over the sphere (a BSDF with transmission) | <= 1 (energy) |
 //!
 //! All directions are unit vectors in the local shading frame (normal = +z). Each integrator
 //! comes in two forms computed by one implementation:
@@ -749,4 +751,99 @@ pub fn reciprocity(mut f: impl FnMut(V3<f64>, V3<f64>) -> f64) -> Reciprocity {
 #[must_use]
 pub fn reciprocity_f32(mut f: impl FnMut(V3<f32>, V3<f32>) -> f32) -> Reciprocity {
     reciprocity(|a, b| f64::from(f(narrow(a.into()), narrow(b.into()))))
+}
+
+/// Integral of `f(w)` over the whole unit sphere with respect to solid angle: the upper
+/// hemisphere and the lower one (w.z <= 0), each by [`hemisphere`]'s method and `cfg`, the
+/// lower one through the mirror w -> (w.x, w.y, -w.z). For BSDFs that transmit (a rough
+/// dielectric), whose lobes lie on both sides.
+///
+/// `peaks`: directions where `f` may be peaked, on either side; each shapes the partition of
+/// its own hemisphere (the first [`MAX_PEAKS`] of each side count). `f` is called only with
+/// unit vectors off the horizon. The value is the sum of the halves' values and the error the
+/// sum of their errors, so the accuracy is [`hemisphere`]'s on each half, and its known flaw
+/// (a kink off the partition's edges, such as the critical angle of total internal
+/// reflection) applies: put a peak on such a ring.
+///
+/// Bad input: a peak with a NaN or infinite component or an invalid `cfg` gives
+/// [`Estimate::NAN`] without calling `f`.
+///
+/// ```
+/// use brdf::integrate::{Config, sphere};
+/// use brdf::V3;
+/// // The sphere's area, and the integral of |cos(theta)| over it: 4 pi and 2 pi.
+/// let area = sphere(|_w: V3<f64>| 1.0, &[], &Config::default());
+/// let cos = sphere(|w: V3<f64>| w.z.abs(), &[], &Config::default());
+/// assert!((area.value - 4.0 * core::f64::consts::PI).abs() < 1e-9);
+/// assert!((cos.value - 2.0 * core::f64::consts::PI).abs() < 1e-9);
+/// ```
+#[must_use]
+pub fn sphere(mut f: impl FnMut(V3<f64>) -> f64, peaks: &[V3<f64>], cfg: &Config) -> Estimate {
+    let (mut up, mut down) = ([DVec3::ZERO; MAX_PEAKS], [DVec3::ZERO; MAX_PEAKS]);
+    let (mut nu, mut nd) = (0, 0);
+    for q in peaks {
+        let q = DVec3::from(*q);
+        if !finite_dir(q) {
+            return Estimate::NAN;
+        }
+        if q.z >= 0.0 && nu < MAX_PEAKS {
+            up[nu] = q;
+            nu += 1;
+        } else if q.z < 0.0 && nd < MAX_PEAKS {
+            down[nd] = DVec3::new(q.x, q.y, -q.z);
+            nd += 1;
+        }
+    }
+    let a = hemisphere_glam(|w| f(w.into()), &up[..nu], cfg);
+    let b = hemisphere_glam(|w| f(DVec3::new(w.x, w.y, -w.z).into()), &down[..nd], cfg);
+    Estimate {
+        value: a.value + b.value,
+        error: a.error + b.error,
+        evaluations: a.evaluations + b.evaluations,
+    }
+}
+
+/// [`sphere`] for an `f32` integrand over [`V3<f32>`] (see [`hemisphere_f32`]).
+#[must_use]
+pub fn sphere_f32(mut f: impl FnMut(V3<f32>) -> f32, peaks: &[V3<f32>], cfg: &Config) -> Estimate {
+    let mut p = [V3::new(0.0, 0.0, 0.0); 2 * MAX_PEAKS];
+    let n = peaks.len().min(2 * MAX_PEAKS);
+    for (w, q) in p.iter_mut().zip(peaks) {
+        *w = widen(*q);
+    }
+    sphere(|w| f64::from(f(narrow(w.into()))), &p[..n], cfg)
+}
+
+/// The scattering albedo of a BSDF with transmission: integral over the whole sphere of
+/// f(wo, wi) |cos(theta_i)| dwi ([`sphere`] with [`Config::default`]), at most 1 for a
+/// physical BSDF in the direction the energy flows (for a refracting BSDF, the importance form
+/// whose first argument is the light's direction: `rough_dielectric::Transport`). The mirror
+/// direction of `wo` and the `peaks` given (a refracted direction, a critical-angle ring's
+/// point) shape the partition. A NaN or infinite component of `wo` or of a peak gives
+/// [`Estimate::NAN`].
+///
+/// ```
+/// use brdf::integrate::directional_albedo_sphere;
+/// use brdf::V3;
+/// // A "Lambertian" BSDF that scatters half of the light to each side: albedo 1.
+/// let e = directional_albedo_sphere(V3::unit_z(), |_wo, _wi| 0.5 / core::f64::consts::PI, &[]);
+/// assert!((e.value - 1.0).abs() < 1e-9);
+/// ```
+#[must_use]
+pub fn directional_albedo_sphere(
+    wo: V3<f64>,
+    mut f: impl FnMut(V3<f64>, V3<f64>) -> f64,
+    peaks: &[V3<f64>],
+) -> Estimate {
+    let wo_g = DVec3::from(wo);
+    if !finite_dir(wo_g) {
+        return Estimate::NAN;
+    }
+    let mut p = [V3::new(0.0, 0.0, 0.0); 2 * MAX_PEAKS];
+    p[0] = mirror(wo_g).into();
+    let n = 1 + peaks.len().min(2 * MAX_PEAKS - 1);
+    for (w, q) in p[1..].iter_mut().zip(peaks) {
+        *w = *q;
+    }
+    sphere(|wi| f(wo, wi) * wi.z.abs(), &p[..n], &Config::default())
 }

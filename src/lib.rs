@@ -68,6 +68,7 @@
 //! | `engine` | three.js, Filament, bevy, Unreal Engine 4 and glTF-viewer conventions (roughness floor, Fresnel and F90, visibility guard, diffuse weight) as data, evaluated with the crate's kernels | `engine` |
 //! | `material` | the glTF / Filament metallic-roughness BRDF, its parameters and lobe sampling | `material` |
 //! | `lights` | punctual light radiance, distance attenuation, spot cones | `lights` |
+//! | `rough_dielectric` | the rough dielectric BSDF (reflection and refraction, both sides, radiance or importance) and its visible-normal sampler | `transmission` |
 //! | `sampling` | cosine hemisphere, D cos sampling, visible normals, pdfs | `sampling` |
 //! | `tonemap` | tonemapping operators, exposure | `tonemap` |
 //! | `color` | sRGB / Rec.709 transfer, luminance, colour matrices | `tonemap` |
@@ -168,6 +169,8 @@ pub mod material;
 pub mod microfacet;
 #[cfg(feature = "phong")]
 pub mod phong;
+#[cfg(feature = "transmission")]
+pub mod rough_dielectric;
 #[cfg(feature = "sampling")]
 pub mod sampling;
 #[cfg(feature = "tonemap")]

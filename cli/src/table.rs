@@ -474,6 +474,8 @@ pub const CONSTRUCTORS: &[(&str, &str)] = &[
 
 /// The `model` argument of kernels generic over `Microfacet`.
 pub const MODEL: Domain = Domain::choice(2, "0 = ggx::Ggx, 1 = beckmann::Beckmann");
+/// The `transport` argument of the rough dielectric (`rough_dielectric::Transport`).
+pub const TRANSPORT: Domain = Domain::choice(2, "0 = Radiance, 1 = Importance");
 /// The `coupling` argument of `material::metallic_roughness` (`material::DiffuseCoupling`).
 pub const COUPLING: Domain = Domain::choice(3, "0 = Gltf, 1 = OneMinusF, 2 = Additive");
 /// The `convention` argument of `engine::Convention`'s methods: an index into `engine::ALL`.
@@ -791,6 +793,7 @@ use brdf::ggx::{self, Ggx};
 use brdf::ibl::{dfg, energy, irradiance, prefilter};
 use brdf::material::{self, DiffuseCoupling, MetallicRoughness};
 use brdf::microfacet::{self, Microfacet};
+use brdf::rough_dielectric::{self, Transport};
 use brdf::tonemap::{self, AgxLook, HableParams, LottesParams, Operator, UchimuraParams};
 use brdf::{color, cook_torrance, fresnel, lights, phong, sampling};
 
@@ -819,6 +822,11 @@ fn with_model<T: Real, const N: usize>(
             built(Beckmann::new(alpha_x, alpha_y), |b| f(&b))
         }
     })
+}
+
+/// The transport of choice `k` of [`TRANSPORT`].
+fn transport_of(k: usize) -> Transport {
+    [Transport::Radiance, Transport::Importance][k]
 }
 
 /// The AgX look of choice `k` of [`LOOK`].
@@ -1749,6 +1757,76 @@ pub static KERNELS: &[Kernel] = &[
          wi_x: Domain::DIR, wi_y: Domain::DIR, wi_z: Domain::DIR] -> [pdf: Domain::NONNEG],
         built(Beckmann::new(alpha_x, alpha_y), |b| {
             [sampling::beckmann_reflection_pdf(&b, v3(wo_x, wo_y, wo_z), v3(wi_x, wi_y, wi_z))]
+        })
+    ),
+    // ---------------------------------------------------------------- rough dielectric
+    kernel!(
+        "rough_dielectric::half_vector",
+        "Generalized half vector +-normalize(wo + eta' wi), Walter et al. 2007 eq. 16",
+        [wo_x: Domain::DIR, wo_y: Domain::DIR, wo_z: Domain::DIR,
+         wi_x: Domain::DIR, wi_y: Domain::DIR, wi_z: Domain::DIR, eta: ETA]
+            -> [h_x: Domain::DIR_OUT, h_y: Domain::DIR_OUT, h_z: Domain::DIR_OUT],
+        o3(rough_dielectric::half_vector(v3(wo_x, wo_y, wo_z), v3(wi_x, wi_y, wi_z), eta))
+    ),
+    kernel!(
+        "rough_dielectric::eval",
+        "Rough dielectric BSDF, reflection and transmission, Walter et al. 2007 eqs. 20-21",
+        [model: MODEL, alpha_x: ALPHA, alpha_y: ALPHA,
+         wo_x: Domain::DIR, wo_y: Domain::DIR, wo_z: Domain::DIR,
+         wi_x: Domain::DIR, wi_y: Domain::DIR, wi_z: Domain::DIR, eta: ETA,
+         transport: TRANSPORT]
+            -> [f: Domain::NONNEG],
+        with_model(model, alpha_x, alpha_y, |m| {
+            pick(transport, 2, |k| {
+                let (wo, wi) = (v3(wo_x, wo_y, wo_z), v3(wi_x, wi_y, wi_z));
+                [rough_dielectric::eval(m, wo, wi, eta, transport_of(k))]
+            })
+        })
+    ),
+    kernel!(
+        "rough_dielectric::pdf",
+        "pdf of the rough dielectric samplers, both lobes, Walter et al. 2007 eqs. 14, 17",
+        [model: MODEL, alpha_x: ALPHA, alpha_y: ALPHA,
+         wo_x: Domain::DIR, wo_y: Domain::DIR, wo_z: Domain::DIR,
+         wi_x: Domain::DIR, wi_y: Domain::DIR, wi_z: Domain::DIR, eta: ETA]
+            -> [pdf: Domain::NONNEG],
+        with_model(model, alpha_x, alpha_y, |m| {
+            [rough_dielectric::pdf(m, v3(wo_x, wo_y, wo_z), v3(wi_x, wi_y, wi_z), eta)]
+        })
+    ),
+    kernel!(
+        "rough_dielectric::ggx_sample",
+        "GGX rough dielectric sample (wi, pdf, weight G2 / G1), Walter et al. 2007; Heitz 2018",
+        [alpha_x: ALPHA, alpha_y: ALPHA, wo_x: Domain::DIR, wo_y: Domain::DIR, wo_z: Domain::DIR,
+         eta: ETA, u0: Domain::SAMPLE, u1: Domain::SAMPLE, u2: Domain::SAMPLE,
+         transport: TRANSPORT]
+            -> [wi_x: Domain::DIR_OUT, wi_y: Domain::DIR_OUT, wi_z: Domain::DIR_OUT,
+                pdf: Domain::NONNEG, weight: Domain::NONNEG],
+        built(Ggx::new(alpha_x, alpha_y), |g| {
+            pick(transport, 2, |k| {
+                let wo = v3(wo_x, wo_y, wo_z);
+                let t = transport_of(k);
+                let (w, p, wt) = rough_dielectric::ggx_sample(&g, wo, eta, u0, u1, u2, t);
+                [w.x, w.y, w.z, p, wt]
+            })
+        })
+    ),
+    kernel!(
+        "rough_dielectric::beckmann_sample",
+        "Beckmann rough dielectric sample (wi, pdf, weight G2 / G1), Walter et al. 2007; Heitz \
+         and d'Eon 2014",
+        [alpha_x: ALPHA, alpha_y: ALPHA, wo_x: Domain::DIR, wo_y: Domain::DIR, wo_z: Domain::DIR,
+         eta: ETA, u0: Domain::SAMPLE, u1: Domain::SAMPLE, u2: Domain::SAMPLE,
+         transport: TRANSPORT]
+            -> [wi_x: Domain::DIR_OUT, wi_y: Domain::DIR_OUT, wi_z: Domain::DIR_OUT,
+                pdf: Domain::NONNEG, weight: Domain::NONNEG],
+        built(Beckmann::new(alpha_x, alpha_y), |b| {
+            pick(transport, 2, |k| {
+                let wo = v3(wo_x, wo_y, wo_z);
+                let t = transport_of(k);
+                let (w, p, wt) = rough_dielectric::beckmann_sample(&b, wo, eta, u0, u1, u2, t);
+                [w.x, w.y, w.z, p, wt]
+            })
         })
     ),
     // ---------------------------------------------------------------- diffuse

@@ -199,6 +199,8 @@ fn table<T: Real>() -> Vec<Kernel<T>> {
     cook_torrance_rows(&mut t);
     #[cfg(feature = "sampling")]
     sampling_rows(&mut t);
+    #[cfg(all(feature = "transmission", feature = "ggx", feature = "beckmann"))]
+    rough_dielectric_rows(&mut t);
     #[cfg(feature = "tonemap")]
     tonemap_rows(&mut t);
     #[cfg(feature = "diffuse")]
@@ -1338,6 +1340,66 @@ fn cook_torrance_rows<T: Real>(t: &mut Vec<Kernel<T>>) {
                     x[5],
                 )]
             },
+        ));
+    }
+}
+
+#[cfg(all(feature = "transmission", feature = "ggx", feature = "beckmann"))]
+fn rough_dielectric_rows<T: Real>(t: &mut Vec<Kernel<T>>) {
+    use brdf::rough_dielectric::{self as rd, Transport};
+    // A refracted pair (wi inside), so the transmission lobe is the one checked.
+    const WT: [f64; 3] = [-0.3, 0.0, -0.953_939_201_416_945_6];
+    let g = brdf::ggx::Ggx::new(T::splat(0.3), T::splat(0.5)).unwrap();
+    let b = brdf::beckmann::Beckmann::new(T::splat(0.3), T::splat(0.5)).unwrap();
+    t.push(k(
+        "rough_dielectric::half_vector",
+        vec![v("wo", WO), v("wi", WT), p("eta", 1.5, &ETA_BAD)],
+        |x| o3(rd::half_vector(v3(x, 0), v3(x, 3), x[6])),
+    ));
+    for (tr, name) in [
+        (Transport::Radiance, "Radiance"),
+        (Transport::Importance, "Importance"),
+    ] {
+        for wi in [WI, WT] {
+            t.push(k(
+                &format!("rough_dielectric::eval(Ggx, {name}, wi.z {})", wi[2]),
+                vec![v("wo", WO), v("wi", wi), p("eta", 1.5, &ETA_BAD)],
+                move |x| vec![rd::eval(&g, v3(x, 0), v3(x, 3), x[6], tr)],
+            ));
+            t.push(k(
+                &format!("rough_dielectric::eval(Beckmann, {name}, wi.z {})", wi[2]),
+                vec![v("wo", WO), v("wi", wi), p("eta", 1.5, &ETA_BAD)],
+                move |x| vec![rd::eval(&b, v3(x, 0), v3(x, 3), x[6], tr)],
+            ));
+        }
+        let u = || [c("u0", 0.9), c("u1", 0.3), c("u2", 0.6)].concat();
+        t.push(k(
+            &format!("rough_dielectric::ggx_sample({name})"),
+            vec![v("wo", WO), p("eta", 1.5, &ETA_BAD), u()],
+            move |x| {
+                let (wi, pdf, w) = rd::ggx_sample(&g, v3(x, 0), x[3], x[4], x[5], x[6], tr);
+                vec![wi.x, wi.y, wi.z, pdf, w]
+            },
+        ));
+        t.push(k(
+            &format!("rough_dielectric::beckmann_sample({name})"),
+            vec![v("wo", WO), p("eta", 1.5, &ETA_BAD), u()],
+            move |x| {
+                let (wi, pdf, w) = rd::beckmann_sample(&b, v3(x, 0), x[3], x[4], x[5], x[6], tr);
+                vec![wi.x, wi.y, wi.z, pdf, w]
+            },
+        ));
+    }
+    for wi in [WI, WT] {
+        t.push(k(
+            &format!("rough_dielectric::pdf(Ggx, wi.z {})", wi[2]),
+            vec![v("wo", WO), v("wi", wi), p("eta", 1.5, &ETA_BAD)],
+            move |x| vec![rd::pdf(&g, v3(x, 0), v3(x, 3), x[6])],
+        ));
+        t.push(k(
+            &format!("rough_dielectric::pdf(Beckmann, wi.z {})", wi[2]),
+            vec![v("wo", WO), v("wi", wi), p("eta", 1.5, &ETA_BAD)],
+            move |x| vec![rd::pdf(&b, v3(x, 0), v3(x, 3), x[6])],
         ));
     }
 }
@@ -2713,6 +2775,10 @@ const SOURCES: &[(&str, &str)] = &[
     ("microfacet", include_str!("../../src/microfacet.rs")),
     ("phong", include_str!("../../src/phong.rs")),
     ("sampling", include_str!("../../src/sampling.rs")),
+    (
+        "rough_dielectric",
+        include_str!("../../src/rough_dielectric.rs"),
+    ),
     ("shading", include_str!("../../src/shading.rs")),
     ("tonemap", include_str!("../../src/tonemap/mod.rs")),
     ("tonemap", include_str!("../../src/tonemap/curves.rs")),

@@ -13,6 +13,7 @@ use brdf::ibl::{dfg, energy, irradiance, prefilter};
 use brdf::material::{self, DiffuseCoupling, MetallicRoughness};
 use brdf::microfacet::Alpha;
 use brdf::microfacet::{self, Microfacet};
+use brdf::rough_dielectric::{self, Transport};
 use brdf::tonemap::{self, AgxLook, HableParams, LottesParams, Operator, UchimuraParams};
 use brdf::{Cosines, Real, V3, color, cook_torrance, diffuse, fresnel, lights, phong, sampling};
 
@@ -95,6 +96,15 @@ fn model<T: Scalar>(a: &[T], i: usize) -> Box<dyn Microfacet<T>> {
         0 => Box::new(ggx(a, i + 1)),
         1 => Box::new(bk(a, i + 1)),
         m => panic!("no model {m}"),
+    }
+}
+
+/// The transport of choice `k`, spelled out so a reordered table disagrees.
+fn transport<T: Scalar>(k: T) -> Transport {
+    match idx(k) {
+        0 => Transport::Radiance,
+        1 => Transport::Importance,
+        t => panic!("no transport {t}"),
     }
 }
 
@@ -343,6 +353,46 @@ pub fn direct<T: Scalar>(path: &str, a: &[T]) -> Option<Vec<T>> {
             let (w, p, wt) =
                 sampling::beckmann_reflection_rgb(&bk(a, 0), v(a, 2), a[5], a[6], |_| fr);
             vec![w.x, w.y, w.z, p, wt.x, wt.y, wt.z]
+        }
+        "rough_dielectric::half_vector" => {
+            three(rough_dielectric::half_vector(v(a, 0), v(a, 3), a[6]))
+        }
+        "rough_dielectric::eval" => vec![rough_dielectric::eval(
+            model(a, 0).as_ref(),
+            v(a, 3),
+            v(a, 6),
+            a[9],
+            transport(a[10]),
+        )],
+        "rough_dielectric::pdf" => vec![rough_dielectric::pdf(
+            model(a, 0).as_ref(),
+            v(a, 3),
+            v(a, 6),
+            a[9],
+        )],
+        "rough_dielectric::ggx_sample" => {
+            let (w, p, wt) = rough_dielectric::ggx_sample(
+                &ggx(a, 0),
+                v(a, 2),
+                a[5],
+                a[6],
+                a[7],
+                a[8],
+                transport(a[9]),
+            );
+            vec![w.x, w.y, w.z, p, wt]
+        }
+        "rough_dielectric::beckmann_sample" => {
+            let (w, p, wt) = rough_dielectric::beckmann_sample(
+                &bk(a, 0),
+                v(a, 2),
+                a[5],
+                a[6],
+                a[7],
+                a[8],
+                transport(a[9]),
+            );
+            vec![w.x, w.y, w.z, p, wt]
         }
         "sampling::beckmann_reflection_pdf" => {
             vec![sampling::beckmann_reflection_pdf(

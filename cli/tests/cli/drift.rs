@@ -13,7 +13,13 @@ use syn::{FnArg, GenericParam, ImplItem, Item, Pat, Signature, TraitItem, Type};
 
 /// Types whose values are one integer argument naming a choice (an enum or a set of
 /// constants), by type name.
-const CHOICE_TYPES: &[&str] = &["AgxLook", "Convention", "DiffuseCoupling", "Operator"];
+const CHOICE_TYPES: &[&str] = &[
+    "AgxLook",
+    "Convention",
+    "DiffuseCoupling",
+    "Operator",
+    "Transport",
+];
 
 /// One parsed source file and the module path its public items have.
 struct Source {
@@ -854,6 +860,12 @@ const EXCLUDED: &[(&str, &str)] = &[
         "rearranges the 27 coefficients, not a value at a point",
     ),
     ("integrate::hemisphere", "integrator of a caller's closure"),
+    ("integrate::sphere", "integrator of a caller's closure"),
+    ("integrate::sphere_f32", "integrator of a caller's closure"),
+    (
+        "integrate::directional_albedo_sphere",
+        "integrator of a caller's closure",
+    ),
     (
         "integrate::hemisphere_f32",
         "integrator of a caller's closure",
