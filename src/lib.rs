@@ -69,6 +69,8 @@
 //! | `material` | the glTF / Filament metallic-roughness BRDF, its parameters and lobe sampling | `material` |
 //! | `lights` | punctual light radiance, distance attenuation, spot cones | `lights` |
 //! | `rough_dielectric` | the rough dielectric BSDF (reflection and refraction, both sides, radiance or importance) and its visible-normal sampler | `transmission` |
+//! | `transmission` | glTF `KHR_materials_transmission` (thin-walled and volumetric BTDF in the glTF dielectric) and `KHR_materials_volume` (thickness, Beer-Lambert attenuation) | `transmission` |
+//! | `iridescence` | thin-film interference (Belcour and Barla 2017) over dielectric and conductor bases, integrated in CIE XYZ | `iridescence` |
 //! | `sampling` | cosine hemisphere, D cos sampling, visible normals, pdfs | `sampling` |
 //! | `tonemap` | tonemapping operators, exposure | `tonemap` |
 //! | `color` | sRGB / Rec.709 transfer, luminance, colour matrices | `tonemap` |
@@ -161,6 +163,8 @@ pub mod ggx;
 pub mod ibl;
 #[cfg(feature = "integrate")]
 pub mod integrate;
+#[cfg(feature = "iridescence")]
+pub mod iridescence;
 #[cfg(feature = "lights")]
 pub mod lights;
 #[cfg(feature = "material")]
@@ -175,6 +179,8 @@ pub mod rough_dielectric;
 pub mod sampling;
 #[cfg(feature = "tonemap")]
 pub mod tonemap;
+#[cfg(feature = "transmission")]
+pub mod transmission;
 #[allow(dead_code)] // each feature uses a subset of the f64 evaluation of f32 kernels
 mod widen;
 

@@ -179,21 +179,8 @@ fn lobes<T: Real, M: Microfacet<T> + ?Sized>(
     let inv_cos = (co.abs() * ci.abs()).recip().min(T::MAX);
     // Reflection: D G2 F / (4 |co| |ci|).
     let fr = cap_mul(cap_mul(d * g2, f_r), T::splat(0.25) * inv_cos);
-    // Transmission: D G2 T |i.h| |o.h| / (|ci| |co| (i.h + o.h / eta')^2) times s. The
-    // denominator is formed as (eta' i.h + o.h)^2 / eta'^2 where eta' < 1, so that o.h / eta'
-    // cannot overflow: dwh = |i.h| / (i.h + o.h / eta')^2, the Jacobian d(omega_h) / d(omega_i).
-    let small = etap.simd_lt(T::ONE);
-    let sum = T::select(small, etap.mul_add(i_h, o_h), i_h + o_h / etap);
-    let num = T::select(small, cap_mul(i_h.abs(), etap * etap), i_h.abs());
-    let dwh = T::select(
-        sum.simd_eq(T::ZERO),
-        T::ZERO,
-        (num / (sum * sum)).min(T::MAX),
-    );
-    let s = match transport {
-        Transport::Radiance => etap.recip().min(T::MAX).sq().min(T::MAX),
-        Transport::Importance => T::ONE,
-    };
+    // Transmission: D G2 T |i.h| |o.h| / (|ci| |co| (i.h + o.h / eta')^2) times s.
+    let (dwh, s) = refraction_jacobian(o_h, i_h, etap, transport);
     let ft = cap_mul(
         cap_mul(cap_mul(d * g2, t), cap_mul(o_h.abs(), inv_cos)),
         dwh,
@@ -215,6 +202,52 @@ fn lobes<T: Real, M: Microfacet<T> + ?Sized>(
         nan_where(bad | f.is_nan(), f),
         nan_where(bad | p.is_nan(), p),
     )
+}
+
+/// Walter et al. 2007's BTDF without its Fresnel factor, for the glTF composition that
+/// weighs it by a Schlick factor of its own (`transmission::dielectric_bsdf`):
+/// (D(h) G2 |wi.h| |wo.h| / (|wi.z| |wo.z| (wi.h + wo.h / eta')^2) s, wo.h), 0 where the pair
+/// is no refraction pair (same side, back-facing h, degenerate h, eta = 1). Finite inputs
+/// only (the caller applies the NaN rule).
+#[cfg_attr(not(feature = "ggx"), allow(dead_code))]
+#[inline]
+pub(crate) fn btdf_without_fresnel<T: Real, M: Microfacet<T> + ?Sized>(
+    dist: &M,
+    wo: V3<T>,
+    wi: V3<T>,
+    eta: T,
+    transport: Transport,
+) -> (T, T) {
+    let (h, etap, reflect, degenerate) = half_parts(wo, wi, eta);
+    let (co, ci) = (wo.z, wi.z);
+    let (o_h, i_h) = (wo.dot(h), wi.dot(h));
+    let facing = (o_h * co).simd_gt(T::ZERO) & (i_h * ci).simd_gt(T::ZERO);
+    let live = facing & !degenerate & !reflect & (eta - T::ONE).abs().simd_gt(T::ZERO);
+    let (dwh, s) = refraction_jacobian(o_h, i_h, etap, transport);
+    let g2 = (T::ONE + dist.lambda(wo) + dist.lambda(wi)).recip();
+    let inv_cos = (co.abs() * ci.abs()).recip().min(T::MAX);
+    let ft = cap_mul(cap_mul(dist.d(h) * g2, cap_mul(o_h.abs(), inv_cos)), dwh);
+    (T::select(live, cap_mul(ft, s), T::ZERO), o_h)
+}
+
+/// d(omega_h) / d(omega_i) = |i.h| / (i.h + o.h / eta')^2 (Walter et al. 2007 eq. 17), capped
+/// at MAX, formed as |i.h| eta'^2 / (eta' i.h + o.h)^2 where eta' < 1 so that o.h / eta'
+/// cannot overflow; and the transport factor s (1 / eta'^2 for radiance, capped; 1).
+#[inline]
+fn refraction_jacobian<T: Real>(o_h: T, i_h: T, etap: T, transport: Transport) -> (T, T) {
+    let small = etap.simd_lt(T::ONE);
+    let sum = T::select(small, etap.mul_add(i_h, o_h), i_h + o_h / etap);
+    let num = T::select(small, cap_mul(i_h.abs(), etap * etap), i_h.abs());
+    let dwh = T::select(
+        sum.simd_eq(T::ZERO),
+        T::ZERO,
+        (num / (sum * sum)).min(T::MAX),
+    );
+    let s = match transport {
+        Transport::Radiance => etap.recip().min(T::MAX).sq().min(T::MAX),
+        Transport::Importance => T::ONE,
+    };
+    (dwh, s)
 }
 
 /// The rough dielectric BSDF f(wo, wi), reflection and transmission together (Walter et al.

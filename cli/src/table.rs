@@ -447,6 +447,9 @@ pub fn find(path: &str) -> Option<&'static Kernel> {
 pub const CONSTRUCTORS: &[(&str, &str)] = &[
     ("ggx::Ggx", "new"),
     ("beckmann::Beckmann", "new"),
+    ("transmission::Transmission", "new"),
+    ("transmission::Volume", "new"),
+    ("iridescence::ThinFilm", "new"),
     ("frame::Frame", "from_normal"),
     ("lights::SpotCone", "new"),
     ("material::MetallicRoughness", "new"),
@@ -508,6 +511,10 @@ const ALPHA: Domain = Domain::new(
 );
 /// An index of refraction (or the real part of a complex one): (0, MAX].
 const ETA: Domain = Domain::new(0.0, true, f64::INFINITY, true, "(0, MAX], finite");
+/// A thin film's thickness in nanometres (`iridescence::ThinFilm::new`).
+const FILM_THICKNESS: Domain = Domain::closed(0.0, 10_000.0, "[0, MAX_THICKNESS_NM = 10000] nm");
+/// A thin film's index of refraction (`iridescence::ThinFilm::new`).
+const FILM_IOR: Domain = Domain::closed(1.0, 10.0, "[1, MAX_FILM_IOR = 10]");
 /// An extinction coefficient: [0, MAX].
 const KAPPA: Domain = Domain::new(0.0, false, f64::INFINITY, true, "[0, MAX], finite");
 /// A Phong or Blinn-Phong exponent: finite and >= 0.
@@ -791,10 +798,12 @@ use brdf::engine;
 use brdf::frame::{self, Frame};
 use brdf::ggx::{self, Ggx};
 use brdf::ibl::{dfg, energy, irradiance, prefilter};
+use brdf::iridescence::{self, ThinFilm};
 use brdf::material::{self, DiffuseCoupling, MetallicRoughness};
 use brdf::microfacet::{self, Microfacet};
 use brdf::rough_dielectric::{self, Transport};
 use brdf::tonemap::{self, AgxLook, HableParams, LottesParams, Operator, UchimuraParams};
+use brdf::transmission::{self, Transmission, Volume};
 use brdf::{color, cook_torrance, fresnel, lights, phong, sampling};
 
 /// The [`Cosines`] of four flattened arguments.
@@ -1827,6 +1836,107 @@ pub static KERNELS: &[Kernel] = &[
                 let (w, p, wt) = rough_dielectric::beckmann_sample(&b, wo, eta, u0, u1, u2, t);
                 [w.x, w.y, w.z, p, wt]
             })
+        })
+    ),
+    // ---------------------------------------------------------------- glTF transmission
+    kernel!(
+        "transmission::Volume::transmittance",
+        "Beer-Lambert transmittance c^(x / d), KHR_materials_volume",
+        [thickness: Domain::NONNEG, attenuation_color_r: Domain::UNIT,
+         attenuation_color_g: Domain::UNIT, attenuation_color_b: Domain::UNIT,
+         attenuation_distance: ETA, path_length: Domain::NONNEG]
+            -> [t_r: Domain::UNIT, t_g: Domain::UNIT, t_b: Domain::UNIT],
+        built(
+            Volume::new(
+                thickness,
+                v3(attenuation_color_r, attenuation_color_g, attenuation_color_b),
+                attenuation_distance,
+            ),
+            |v| o3(v.transmittance(path_length)),
+        )
+    ),
+    kernel!(
+        "transmission::Volume::attenuation_coefficient",
+        "Attenuation coefficient -ln(c) / d, KHR_materials_volume",
+        [thickness: Domain::NONNEG, attenuation_color_r: Domain::UNIT,
+         attenuation_color_g: Domain::UNIT, attenuation_color_b: Domain::UNIT,
+         attenuation_distance: ETA]
+            -> [sigma_r: Domain::NONNEG, sigma_g: Domain::NONNEG, sigma_b: Domain::NONNEG],
+        built(
+            Volume::new(
+                thickness,
+                v3(attenuation_color_r, attenuation_color_g, attenuation_color_b),
+                attenuation_distance,
+            ),
+            |v| o3(v.attenuation_coefficient()),
+        )
+    ),
+    kernel!(
+        "transmission::thin_walled_btdf",
+        "Thin-walled GGX BTDF V_T D_T with the mirrored half vector, KHR_materials_transmission",
+        [alpha_x: ALPHA, alpha_y: ALPHA,
+         wo_x: Domain::DIR, wo_y: Domain::DIR, wo_z: Domain::DIR,
+         wi_x: Domain::DIR, wi_y: Domain::DIR, wi_z: Domain::DIR]
+            -> [f: Domain::NONNEG],
+        built(Ggx::new(alpha_x, alpha_y), |g| {
+            [transmission::thin_walled_btdf(&g, v3(wo_x, wo_y, wo_z), v3(wi_x, wi_y, wi_z))]
+        })
+    ),
+    kernel!(
+        "transmission::dielectric_bsdf",
+        "glTF dielectric BSDF with KHR_materials_transmission, thin-walled or volumetric (Walter \
+         et al. 2007)",
+        [alpha_x: ALPHA, alpha_y: ALPHA,
+         wo_x: Domain::DIR, wo_y: Domain::DIR, wo_z: Domain::DIR,
+         wi_x: Domain::DIR, wi_y: Domain::DIR, wi_z: Domain::DIR,
+         base_color_r: Domain::UNIT, base_color_g: Domain::UNIT, base_color_b: Domain::UNIT,
+         ior: ETA, factor: Domain::UNIT, thickness: Domain::NONNEG,
+         attenuation_color_r: Domain::UNIT, attenuation_color_g: Domain::UNIT,
+         attenuation_color_b: Domain::UNIT, attenuation_distance: ETA]
+            -> [f_r: Domain::NONNEG, f_g: Domain::NONNEG, f_b: Domain::NONNEG],
+        built(Ggx::new(alpha_x, alpha_y), |g| {
+            built(Transmission::new(factor), |t| {
+                built(
+                    Volume::new(
+                        thickness,
+                        v3(attenuation_color_r, attenuation_color_g, attenuation_color_b),
+                        attenuation_distance,
+                    ),
+                    |vol| {
+                        o3(transmission::dielectric_bsdf(
+                            &g,
+                            v3(wo_x, wo_y, wo_z),
+                            v3(wi_x, wi_y, wi_z),
+                            v3(base_color_r, base_color_g, base_color_b),
+                            ior,
+                            &t,
+                            &vol,
+                        ))
+                    },
+                )
+            })
+        })
+    ),
+    // ---------------------------------------------------------------- iridescence
+    kernel!(
+        "iridescence::dielectric",
+        "Thin-film XYZ reflectance over a dielectric base, Belcour and Barla 2017",
+        [thickness: FILM_THICKNESS, ior: FILM_IOR, outside_ior: ETA, base_ior: ETA,
+         cos_theta: Domain::UNIT]
+            -> [cie_x: Domain::UNIT, cie_y: Domain::UNIT, cie_z: Domain::UNIT],
+        built(ThinFilm::new(thickness, ior), |f| {
+            o3(iridescence::dielectric(&f, outside_ior, base_ior, cos_theta))
+        })
+    ),
+    kernel!(
+        "iridescence::conductor",
+        "Thin-film XYZ reflectance over a conductor base (its phase shift), Belcour and Barla \
+         2017",
+        [thickness: FILM_THICKNESS, ior: FILM_IOR, outside_ior: ETA, base_eta: ETA,
+         base_k: KAPPA, cos_theta: Domain::UNIT]
+            -> [cie_x: Domain::UNIT, cie_y: Domain::UNIT, cie_z: Domain::UNIT],
+        built(ThinFilm::new(thickness, ior), |f| {
+            o3(iridescence::conductor(&f, outside_ior, base_eta, base_k, cos_theta))
         })
     ),
     // ---------------------------------------------------------------- diffuse

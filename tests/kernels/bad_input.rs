@@ -201,6 +201,10 @@ fn table<T: Real>() -> Vec<Kernel<T>> {
     sampling_rows(&mut t);
     #[cfg(all(feature = "transmission", feature = "ggx", feature = "beckmann"))]
     rough_dielectric_rows(&mut t);
+    #[cfg(all(feature = "transmission", feature = "ggx"))]
+    gltf_transmission_rows(&mut t);
+    #[cfg(feature = "iridescence")]
+    iridescence_rows(&mut t);
     #[cfg(feature = "tonemap")]
     tonemap_rows(&mut t);
     #[cfg(feature = "diffuse")]
@@ -1404,6 +1408,89 @@ fn rough_dielectric_rows<T: Real>(t: &mut Vec<Kernel<T>>) {
     }
 }
 
+#[cfg(all(feature = "transmission", feature = "ggx"))]
+fn gltf_transmission_rows<T: Real>(t: &mut Vec<Kernel<T>>) {
+    use brdf::transmission::{self as tr, Transmission, Volume};
+    const WT: [f64; 3] = [-0.3, 0.0, -0.953_939_201_416_945_6];
+    let g = brdf::ggx::Ggx::new(T::splat(0.3), T::splat(0.5)).unwrap();
+    let vol = |th: f64| {
+        Volume::new(
+            T::splat(th),
+            V3::new(T::splat(0.9), T::splat(0.5), T::splat(0.2)),
+            T::splat(2.0),
+        )
+        .unwrap()
+    };
+    let (thin, thick) = (vol(0.0), vol(1.0));
+    t.push(k(
+        "Volume::transmittance",
+        vec![p("path_length", 1.5, &NONNEG_BAD)],
+        move |x| o3(thick.transmittance(x[0])),
+    ));
+    t.push(k(
+        "transmission::thin_walled_btdf",
+        vec![v("wo", WO), v("wi", WT)],
+        move |x| vec![tr::thin_walled_btdf(&g, v3(x, 0), v3(x, 3))],
+    ));
+    for (name, volume) in [("thin", thin), ("volumetric", thick)] {
+        for wi in [WI, WT] {
+            let tf = Transmission::new(T::splat(0.7)).unwrap();
+            t.push(
+                k(
+                    &format!("transmission::dielectric_bsdf({name}, wi.z {})", wi[2]),
+                    vec![
+                        v("wo", WO),
+                        v("wi", wi),
+                        rgb("base_color", [0.9, 0.6, 0.3], &UNIT_BAD),
+                        p("ior", 1.5, &ETA_BAD),
+                    ],
+                    move |x| {
+                        o3(tr::dielectric_bsdf(
+                            &g,
+                            v3(x, 0),
+                            v3(x, 3),
+                            v3(x, 6),
+                            x[9],
+                            &tf,
+                            &volume,
+                        ))
+                    },
+                )
+                .dep("base_color.x", &[0])
+                .dep("base_color.y", &[1])
+                .dep("base_color.z", &[2]),
+            );
+        }
+    }
+}
+
+#[cfg(feature = "iridescence")]
+fn iridescence_rows<T: Real>(t: &mut Vec<Kernel<T>>) {
+    use brdf::iridescence::{self as ir, ThinFilm};
+    for d in [0.0, 300.0] {
+        let film = ThinFilm::new(T::splat(d), T::splat(1.33)).unwrap();
+        t.push(k(
+            &format!("iridescence::dielectric(d {d})"),
+            vec![
+                p("outside_ior", 1.0, &ETA_BAD),
+                p("base_ior", 1.5, &ETA_BAD),
+                c("cos_theta", VH),
+            ],
+            move |x| o3(ir::dielectric(&film, x[0], x[1], x[2])),
+        ));
+        t.push(k(
+            &format!("iridescence::conductor(d {d})"),
+            vec![
+                p("outside_ior", 1.0, &ETA_BAD),
+                p("base_eta", 0.2, &ETA_BAD),
+                p("base_k", 3.9, &NONNEG_BAD),
+                c("cos_theta", VH),
+            ],
+            move |x| o3(ir::conductor(&film, x[0], x[1], x[2], x[3])),
+        ));
+    }
+}
+
 #[cfg(feature = "sampling")]
 fn sampling_rows<T: Real>(t: &mut Vec<Kernel<T>>) {
     use brdf::sampling as sm;
@@ -2261,7 +2348,10 @@ struct Outcome {
 /// Returns the finite inputs that -inf and +inf must equal, or None for an input that rule 5
 /// sends to NaN (directions, colours, parameters, angles, distances, the DFG terms a and b).
 fn clamped(kernel: &str, name: &str) -> Option<[f64; 2]> {
-    if name.contains("_dot_") || name.starts_with("cos_") || matches!(name, "mu" | "u1" | "u2") {
+    if name.contains("_dot_")
+        || name.starts_with("cos_")
+        || matches!(name, "mu" | "u0" | "u1" | "u2")
+    {
         return Some([-1.0, 1.0]);
     }
     // The tonemap operators document their own input clamp (`tonemap::sanitize`, the module's
@@ -2728,6 +2818,14 @@ const NOT_KERNELS: &[(&str, &str)] = &[
     ("PhongDiffuseSpecular::kd", "getter"),
     ("PhongDiffuseSpecular::ks", "getter"),
     ("PhongDiffuseSpecular::exponent", "getter"),
+    ("Transmission::factor", "getter"),
+    ("Volume::thickness", "getter"),
+    ("ThinFilm::thickness", "getter"),
+    ("ThinFilm::ior", "getter"),
+    (
+        "Volume::attenuation_coefficient",
+        "getter of a derived parameter (validated parameters only)",
+    ),
 ];
 
 /// Methods every parameter type of these modules has: constructor and getters.
@@ -2779,6 +2877,8 @@ const SOURCES: &[(&str, &str)] = &[
         "rough_dielectric",
         include_str!("../../src/rough_dielectric.rs"),
     ),
+    ("transmission", include_str!("../../src/transmission.rs")),
+    ("iridescence", include_str!("../../src/iridescence.rs")),
     ("shading", include_str!("../../src/shading.rs")),
     ("tonemap", include_str!("../../src/tonemap/mod.rs")),
     ("tonemap", include_str!("../../src/tonemap/curves.rs")),

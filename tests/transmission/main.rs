@@ -6,14 +6,22 @@
 //! - `reciprocity`: generalized reciprocity and the radiance / importance adjoint
 //! - `sampling`: the sampler against its pdf by chi-square over the whole sphere
 //! - `edges`: eta = 1, total internal reflection, bad input, lanes against scalars
+//! - `gltf`: `KHR_materials_transmission` and `KHR_materials_volume`
 //! - `sphere`: the whole-sphere integrators on known integrals
-#![cfg(feature = "transmission")]
+#![cfg(all(
+    feature = "transmission",
+    feature = "ggx",
+    feature = "beckmann",
+    feature = "integrate",
+    feature = "cook-torrance"
+))]
 
 #[path = "../common/mod.rs"]
 mod common;
 
 mod edges;
 mod energy;
+mod gltf;
 mod reciprocity;
 mod sampling;
 mod sphere;

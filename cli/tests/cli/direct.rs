@@ -10,11 +10,13 @@ use brdf::fresnel::ComplexIor;
 use brdf::ggx::{self, Ggx};
 use brdf::ibl::energy::{Albedo, AverageAlbedo, Reflectance};
 use brdf::ibl::{dfg, energy, irradiance, prefilter};
+use brdf::iridescence::{self, ThinFilm};
 use brdf::material::{self, DiffuseCoupling, MetallicRoughness};
 use brdf::microfacet::Alpha;
 use brdf::microfacet::{self, Microfacet};
 use brdf::rough_dielectric::{self, Transport};
 use brdf::tonemap::{self, AgxLook, HableParams, LottesParams, Operator, UchimuraParams};
+use brdf::transmission::{self, Transmission, Volume};
 use brdf::{Cosines, Real, V3, color, cook_torrance, diffuse, fresnel, lights, phong, sampling};
 
 /// The scalar types the tests call `direct` with.
@@ -394,6 +396,41 @@ pub fn direct<T: Scalar>(path: &str, a: &[T]) -> Option<Vec<T>> {
             );
             vec![w.x, w.y, w.z, p, wt]
         }
+        "transmission::Volume::transmittance" => three(
+            Volume::new(a[0], v(a, 1), a[4])
+                .expect("in-domain volume")
+                .transmittance(a[5]),
+        ),
+        "transmission::Volume::attenuation_coefficient" => three(
+            Volume::new(a[0], v(a, 1), a[4])
+                .expect("in-domain volume")
+                .attenuation_coefficient(),
+        ),
+        "transmission::thin_walled_btdf" => {
+            vec![transmission::thin_walled_btdf(&ggx(a, 0), v(a, 2), v(a, 5))]
+        }
+        "transmission::dielectric_bsdf" => three(transmission::dielectric_bsdf(
+            &ggx(a, 0),
+            v(a, 2),
+            v(a, 5),
+            v(a, 8),
+            a[11],
+            &Transmission::new(a[12]).expect("in-domain transmission"),
+            &Volume::new(a[13], v(a, 14), a[17]).expect("in-domain volume"),
+        )),
+        "iridescence::dielectric" => three(iridescence::dielectric(
+            &ThinFilm::new(a[0], a[1]).expect("in-domain film"),
+            a[2],
+            a[3],
+            a[4],
+        )),
+        "iridescence::conductor" => three(iridescence::conductor(
+            &ThinFilm::new(a[0], a[1]).expect("in-domain film"),
+            a[2],
+            a[3],
+            a[4],
+            a[5],
+        )),
         "sampling::beckmann_reflection_pdf" => {
             vec![sampling::beckmann_reflection_pdf(
                 &bk(a, 0),

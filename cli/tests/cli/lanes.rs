@@ -62,6 +62,19 @@ const POLYNOMIAL: &[(&str, u128)] = &[
     ("sampling::ggx_reflection", 32),
     ("sampling::ggx_reflection_rgb", 16),
     ("ibl::prefilter::sample_from", 8),
+    // The rough dielectric: Beckmann's exp through `model` 1, and the visible-normal samplers
+    // it draws from (sin / cos of the spherical cap, beckmann_vndf's solve).
+    ("rough_dielectric::eval", 4),
+    ("rough_dielectric::pdf", 4),
+    ("rough_dielectric::ggx_sample", 32),
+    ("rough_dielectric::beckmann_sample", 128),
+    // exp(x ln c): the lane ln's ULP amplified by |x ln c| (up to 87 in f32 before the
+    // result underflows); and ln alone.
+    ("transmission::Volume::transmittance", 128),
+    ("transmission::Volume::attenuation_coefficient", 4),
+    // cos, exp and atan2 of the thin film's phases and Gaussian fits.
+    ("iridescence::dielectric", 64),
+    ("iridescence::conductor", 64),
     ("material::MetallicRoughness::sample", 64),
     ("material::MetallicRoughness::sample_weighted", 96),
     // acos in EON's albedo, sin / cos in its samplers.
@@ -157,6 +170,27 @@ const KNOWN: &[Known] = &[
             ],
         ),
         covers: |r| r[0] > 1e30 || r[1] > 1e30 || r[5] >= 0.999,
+    },
+    Known {
+        path: "rough_dielectric::beckmann_sample",
+        why: "draws its normal with beckmann_vndf: the same unconverged Newton steps in the tail \
+              and at alpha near ALPHA_MAX",
+        example: (
+            Float::F64,
+            &[
+                5e-324,
+                9999.999999999998,
+                0.0,
+                -0.8660254037844387,
+                -0.5000000000000001,
+                0.00010000000000000003,
+                9.999999999999998e-5,
+                1.0,
+                1.0,
+                0.0,
+            ],
+        ),
+        covers: |r| r[0] > 1e3 || r[1] > 1e3 || r[7] >= 0.999,
     },
 ];
 

@@ -1,0 +1,12 @@
+//! Thin-film iridescence (`brdf::iridescence`): `cargo test --test iridescence`.
+//!
+//! - `limits`: a vanishing film (thickness 0, or the outside's index) is the bare base's
+//!   Fresnel reflectance, dielectric and conductor
+//! - `spectral`: the analytic XYZ result against the Airy reflectance integrated over
+//!   wavelength with the CIE 1931 colour-matching functions by quadrature
+//! - `domain`: values in [0, 1], finite on the extreme grid, lanes against scalars, NaN rule
+#![cfg(all(feature = "iridescence", feature = "fresnel"))]
+
+mod domain;
+mod limits;
+mod spectral;
