@@ -224,7 +224,9 @@ fn film_xyz<T: Real>(film: &ThinFilm<T>, n1: T, n3: T, k3: T, cos_theta: T) -> V
     let w = n3sq.sub(C::real(sin2.min(T::ONE))).sqrt();
     let (r23s, phi23s) = coefficient(C::real(c2), w);
     let (r23p, phi23p) = coefficient(n3sq.mul(C::real(c2)), w);
-    let opd = T::TWO * n2 * d * c2;
+    // n2 d is capped at 1e7 nm: beyond it every interference term is below e^-1e7 (module
+    // docs), and an n2 near MAX (a film blended to a huge outside index) would overflow.
+    let opd = (n2 * d).min(T::splat(1e7)) * c2 * T::TWO;
     let pol = |r12: T, phi12: T, r23: T, phi23: T| {
         let t121 = T::ONE - r12;
         let r123 = (r12 * r23).min(T::ONE);

@@ -74,7 +74,6 @@ const POLYNOMIAL: &[(&str, u128)] = &[
     ("transmission::Volume::attenuation_coefficient", 4),
     // cos, exp and atan2 of the thin film's phases and Gaussian fits.
     ("iridescence::dielectric", 64),
-    ("iridescence::conductor", 64),
     ("material::MetallicRoughness::sample", 64),
     ("material::MetallicRoughness::sample_weighted", 96),
     // acos in EON's albedo, sin / cos in its samplers.
