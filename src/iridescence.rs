@@ -240,7 +240,7 @@ fn film_xyz<T: Real>(film: &ThinFilm<T>, n1: T, n3: T, k3: T, cos_theta: T) -> V
         let mut cm = rs - t121;
         let mut xyz = V3::splat(c0);
         for m in 1..=3 {
-            cm = cm * root;
+            cm *= root;
             let mf = T::splat(f64::from(m));
             xyz += sensitivity(mf * opd, mf * phi) * (T::TWO * cm);
         }
@@ -249,8 +249,7 @@ fn film_xyz<T: Real>(film: &ThinFilm<T>, n1: T, n3: T, k3: T, cos_theta: T) -> V
     let s = pol(r12s, phi12s, r23s, phi23s);
     let p = pol(r12p, phi12p, r23p, phi23p);
     let xyz = (s + p) * T::HALF;
-    let xyz = xyz.map(|v| T::select(tir, T::ONE, v.saturate()));
-    xyz
+    xyz.map(|v| T::select(tir, T::ONE, v.saturate()))
 }
 
 /// True where an index is in (0, MAX] (false for NaN and +inf).

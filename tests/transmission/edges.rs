@@ -246,7 +246,7 @@ fn lanes_equal_scalars() {
     let mut rng = crate::common::Rng(11);
     let mut d = || {
         let z = 2.0 * rng.next_f64() - 1.0;
-        let p = 6.283 * rng.next_f64();
+        let p = core::f64::consts::TAU * rng.next_f64();
         let r = (1.0 - z * z).sqrt();
         [r * p.cos(), r * p.sin(), z]
     };

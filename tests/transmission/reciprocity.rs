@@ -25,8 +25,8 @@ fn directions() -> Vec<V3<f64>> {
             V3::new(r * p.cos(), r * p.sin(), z)
         })
         .collect();
-    for z in [0.999_999, 1e-3, -1e-3, -0.999_999] {
-        let r = (1.0 - z * z as f64).sqrt();
+    for z in [0.999_999_f64, 1e-3, -1e-3, -0.999_999] {
+        let r = (1.0 - z * z).sqrt();
         out.push(V3::new(r * 0.6, r * 0.8, z));
     }
     out
