@@ -63,7 +63,9 @@
 //! [`ALPHA_MIN`]: crate::microfacet::ALPHA_MIN
 //! [`ALPHA_MAX`]: crate::microfacet::ALPHA_MAX
 
-use crate::domain::{nan_unless, nan_where};
+#[cfg(any(feature = "ggx", feature = "beckmann"))]
+use crate::domain::nan_unless;
+use crate::domain::nan_where;
 use crate::fresnel;
 use crate::microfacet::Microfacet;
 use crate::real::Real;
@@ -311,6 +313,7 @@ pub fn pdf<T: Real, M: Microfacet<T> + ?Sized>(dist: &M, wo: V3<T>, wi: V3<T>, e
 /// and eta_t the relative index across it, evaluated as the positive multiple
 /// n (c - eta_t cos_t) - wo (no division by eta_t) and normalized. Returns wi and whether the
 /// light is totally reflected instead (sin^2 theta_t >= 1).
+#[cfg(any(feature = "ggx", feature = "beckmann"))]
 #[inline]
 fn refract<T: Real>(wo: V3<T>, m: V3<T>, eta: T) -> (V3<T>, T::Mask) {
     let c = wo.dot(m);
@@ -330,6 +333,7 @@ fn refract<T: Real>(wo: V3<T>, m: V3<T>, eta: T) -> (V3<T>, T::Mask) {
 }
 
 /// The shared body of the samplers, from a visible facet normal m drawn for wo's side.
+#[cfg(any(feature = "ggx", feature = "beckmann"))]
 #[inline]
 fn sample_from_normal<T: Real, M: Microfacet<T> + ?Sized>(
     dist: &M,
