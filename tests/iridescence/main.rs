@@ -5,8 +5,9 @@
 //! - `spectral`: the analytic XYZ result against the Airy reflectance integrated over
 //!   wavelength with the CIE 1931 colour-matching functions by quadrature
 //! - `domain`: values in [0, 1], finite on the extreme grid, lanes against scalars, NaN rule
-#![cfg(all(feature = "iridescence", feature = "fresnel"))]
+#![cfg(feature = "iridescence")]
 
 mod domain;
+#[cfg(feature = "fresnel")]
 mod limits;
 mod spectral;
