@@ -6,6 +6,7 @@
 //! - `bad_input`: NaN and infinite arguments, the configuration included, give a NaN estimate
 //! - `error_estimates`: the reported error bounds the actual error
 //! - `generic`: the `_f32` integrators against the f64 ones
+//! - `sphere`: the whole-sphere integrators on integrals with closed forms, both halves
 
 #[path = "../common/mod.rs"]
 mod common;
@@ -14,3 +15,4 @@ mod accuracy;
 mod bad_input;
 mod error_estimates;
 mod generic;
+mod sphere;

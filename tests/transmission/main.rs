@@ -7,7 +7,6 @@
 //! - `sampling`: the sampler against its pdf by chi-square over the whole sphere
 //! - `edges`: eta = 1, total internal reflection, bad input, lanes against scalars
 //! - `gltf`: `KHR_materials_transmission` and `KHR_materials_volume`
-//! - `sphere`: the whole-sphere integrators on known integrals
 #![cfg(all(
     feature = "transmission",
     feature = "ggx",
@@ -24,7 +23,6 @@ mod energy;
 mod gltf;
 mod reciprocity;
 mod sampling;
-mod sphere;
 
 use brdf::V3;
 

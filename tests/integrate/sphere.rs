@@ -1,5 +1,6 @@
 //! `integrate::sphere`, `sphere_f32` and `directional_albedo_sphere` on integrals with closed
 //! forms, and their bad-input rule.
+#![cfg(feature = "integrate")]
 
 use brdf::V3;
 use brdf::integrate::{Config, directional_albedo_sphere, sphere, sphere_f32};
