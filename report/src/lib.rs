@@ -21,6 +21,7 @@ mod stability;
 mod textbook;
 mod tradeoff;
 
+use sections::transmission as transmission_section;
 use sections::{checks, gpu as gpu_section, ibl as ibl_section, lobes, tonemap as tonemap_section};
 use std::error::Error;
 use std::path::{Path, PathBuf};
@@ -495,6 +496,8 @@ pub fn run() -> Result<(), Box<dyn Error>> {
             ibl_section::dfg_section();
             ibl_section::irradiance_section();
             ibl_section::energy_section();
+            transmission_section::dielectric_energy_section(a.quick);
+            transmission_section::iridescence_strip_section();
             gpu_section::gpu_section();
             Ok(())
         },

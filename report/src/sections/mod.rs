@@ -5,3 +5,4 @@ pub mod gpu;
 pub mod ibl;
 pub mod lobes;
 pub mod tonemap;
+pub mod transmission;
