@@ -21,6 +21,9 @@ use std::collections::{HashMap, HashSet};
 /// Up to two directions' components as bits, the cache key.
 type Key = [u64; 6];
 
+/// The integrand an integration pass is handed: a value per key (0 where none is known yet).
+type Integrand<'a> = &'a mut dyn FnMut(Key) -> f64;
+
 /// Passes before giving up: each pass adds at least one direction the final result needs, so
 /// this is only reached by an integrand that keeps the integrator refining a new level every
 /// pass past any realistic depth.
@@ -39,7 +42,7 @@ struct Replay<'py> {
 impl Replay<'_> {
     /// Runs `body` (an integration whose integrand is the closure it is handed) until a
     /// pass needs no new value.
-    fn run<R>(&mut self, body: &dyn Fn(&mut dyn FnMut(Key) -> f64) -> R) -> PyResult<R> {
+    fn run<R>(&mut self, body: &dyn Fn(Integrand<'_>) -> R) -> PyResult<R> {
         for _ in 0..MAX_PASSES {
             let mut missing: Vec<Key> = Vec::new();
             let mut seen: HashSet<Key> = HashSet::new();
