@@ -13,7 +13,9 @@ where a Python with mitsuba is given (or `mitsuba` imports here), Mitsuba 3: the
 variant in a Python loop over N / 100 elements. Each time is the median of `--rounds`
 rounds, in ns per element. Mitsuba runs in its own process (its venv), on the same inputs.
 
-Formulas: GGX D(n.h, alpha) (`brdf.ggx.d`, Walter et al. 2007 eq. 33); Schlick's Fresnel
+Formulas: GGX D(n.h, alpha) (`brdf.ggx.d`, Walter et al. 2007 eq. 33, correctly rounded: in
+float64 through double-word arithmetic, its docs give the cost), the same in working precision
+(`brdf.ggx.d_fast`, against the same numpy formula); Schlick's Fresnel
 (`brdf.fresnel.schlick`); the exact dielectric Fresnel at eta = 1.5 (`brdf.fresnel.dielectric`,
 Mitsuba `mi.fresnel`); GGX D of a direction (`brdf.ggx.Ggx.d`, Mitsuba
 `MicrofacetDistribution.eval`).
@@ -83,7 +85,8 @@ def numpy_formulas(dtype):
         t = (w[0] * w[0] + w[1] * w[1]) / a2 + w[2] * w[2]
         return np.where(w[2] > 0, one / (dtype(np.pi) * a2 * t * t), 0)
 
-    return {"ggx_d": ggx_d, "schlick": schlick, "dielectric": dielectric, "ggx_d_dir": ggx_d_dir}
+    return {"ggx_d": ggx_d, "ggx_d_fast": ggx_d, "schlick": schlick, "dielectric": dielectric,
+            "ggx_d_dir": ggx_d_dir}
 
 
 def brdf_formulas(threads):
@@ -91,6 +94,7 @@ def brdf_formulas(threads):
 
     return {
         "ggx_d": lambda c: brdf.ggx.d(c, ALPHA, threads=threads),
+        "ggx_d_fast": lambda c: brdf.ggx.d_fast(c, ALPHA, threads=threads),
         "schlick": lambda c: brdf.fresnel.schlick(c, F0, threads=threads),
         "dielectric": lambda c: brdf.fresnel.dielectric(c, ETA, threads=threads),
         "ggx_d_dir": lambda w: brdf.ggx.Ggx.d(ALPHA, ALPHA, w[0], w[1], w[2], threads=threads),
