@@ -10,8 +10,8 @@ For each formula it times brdf (float64 and float32; lanes, GIL released) on N r
 (fixed seed), a plain numpy version of the same formula (written here, as a user would) and,
 where a Python with mitsuba is given (or `mitsuba` imports here), Mitsuba 3: the
 `llvm_ad_rgb` variant on the whole batch (drjit, JIT compiled, warm) and the `scalar_rgb`
-variant in a Python loop over N / 100 elements. Each time is the median of `--rounds`
-rounds, in ns per element. Mitsuba runs in its own process (its venv), on the same inputs.
+variant in a Python loop over N / 100 elements. Each time is the best of `--rounds` rounds
+(the least disturbed by other load on the machine), in ns per element. Mitsuba runs in its own process (its venv), on the same inputs.
 
 Formulas: GGX D(n.h, alpha) (`brdf.ggx.d`, Walter et al. 2007 eq. 33, correctly rounded: in
 float64 through double-word arithmetic, its docs give the cost), the same in working precision
@@ -27,7 +27,6 @@ comparison; `--threads 0` lets both use every core.
 import argparse
 import json
 import os
-import statistics
 import subprocess
 import sys
 import time
@@ -46,7 +45,7 @@ def timed(f, rounds):
         t = time.perf_counter()
         f()
         ts.append(time.perf_counter() - t)
-    return statistics.median(ts)
+    return min(ts)
 
 
 def inputs(n, dtype):
@@ -102,7 +101,7 @@ def brdf_formulas(threads):
 
 
 MITSUBA_CHILD = r"""
-import json, statistics, sys, time
+import json, sys, time
 import numpy as np
 import drjit as dr, mitsuba as mi
 n, rounds, threads, alpha, eta = int(sys.argv[1]), int(sys.argv[2]), int(sys.argv[3]), float(sys.argv[4]), float(sys.argv[5])
@@ -114,7 +113,7 @@ def med(f):
     f(); ts = []
     for _ in range(rounds):
         t = time.perf_counter(); f(); ts.append(time.perf_counter() - t)
-    return statistics.median(ts)
+    return min(ts)
 mi.set_variant("llvm_ad_rgb")
 if threads:
     dr.set_thread_count(threads)
@@ -158,7 +157,7 @@ def run_mitsuba(python, n, rounds, threads):
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("--n", type=int, default=1_000_000)
-    ap.add_argument("--rounds", type=int, default=7)
+    ap.add_argument("--rounds", type=int, default=15)
     ap.add_argument("--threads", type=int, default=1, help="1: one core; 0: all cores")
     ap.add_argument("--mitsuba-python", default=None,
                     help="a Python with mitsuba installed (default: this one if it has it)")
@@ -184,7 +183,7 @@ def main():
     mi = run_mitsuba(mi_py, args.n, args.rounds, args.threads) if mi_py else None
 
     head = "| formula | brdf f64 | numpy f64 | brdf f32 | numpy f32 | Mitsuba LLVM (f32) | Mitsuba scalar (f32) |"
-    print(f"ns per element, N = {args.n}, median of {args.rounds}, "
+    print(f"ns per element, N = {args.n}, best of {args.rounds} rounds, "
           f"{'one core' if not threads else 'all cores'}"
           + (f", Mitsuba {mi['version']}" if mi else ", Mitsuba not found"))
     print()

@@ -43,6 +43,15 @@ def test_every_kernel_has_its_rust_doc_or_is_listed():
         assert k["summary"] in brdf.kernel(k["path"]).__doc__
 
 
+def test_stubs_are_valid_python_naming_every_kernel():
+    import ast
+
+    for path, text in _stubs.generate().items():
+        ast.parse(text, filename=path)
+    assert brdf.ggx.lambda_ is getattr(brdf.ggx, "lambda")  # a keyword gets a trailing _
+    assert "def lambda_(" in _stubs.generate()["ggx.pyi"]
+
+
 def test_stubs_are_current():
     with tempfile.TemporaryDirectory() as d:
         _stubs.write(d)

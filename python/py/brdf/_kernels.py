@@ -10,6 +10,7 @@ at the next build.
 from __future__ import annotations
 
 import inspect
+import keyword
 import math
 import sys
 import types
@@ -47,7 +48,14 @@ Options (keyword only):
 
 
 def _rust_to_dotted(path: str) -> str:
-    return path.replace("::", ".")
+    return ".".join(py_name(p) for p in path.split("::"))
+
+
+def py_name(name: str) -> str:
+    """A Rust name as Python can spell it: a Python keyword gets a trailing underscore
+    (`ggx::lambda` is `brdf.ggx.lambda_`, PEP 8's convention); the keyword stays reachable
+    through getattr."""
+    return name + "_" if keyword.iskeyword(name) else name
 
 
 def _resolve_dtype(path, names, arrays, values, dtype):
@@ -197,7 +205,7 @@ def make_function(index, info):
             result,
         )
 
-    kernel.__name__ = leaf
+    kernel.__name__ = py_name(leaf)
     kernel.__qualname__ = _rust_to_dotted(path.split("::", 1)[1]) if "::" in path else leaf
     kernel.__signature__ = sig
     kernel.__doc__ = _docstring(info, dotted, str(sig))
@@ -309,7 +317,8 @@ def build(package):
             m = module("::".join(parts[:-1]))
             func.__module__ = m.__name__
             setattr(m, parts[-1], func)
-            m.__all__.append(parts[-1])
+            setattr(m, py_name(parts[-1]), func)
+            m.__all__.append(py_name(parts[-1]))
         else:
             type_path = "::".join(parts[: type_at + 1])
             methods.setdefault(type_path, []).append((parts[-1], func))
@@ -322,7 +331,7 @@ def build(package):
         ns = {"__module__": m.__name__, "_path": type_path, "_args": ctor}
         for leaf, func in funcs:
             nbound = len(ctor) if func.arg_names[: len(ctor)] == ctor else 0
-            ns[leaf] = _Method(func, nbound)
+            ns[leaf] = ns[py_name(leaf)] = _Method(func, nbound)
         cls = type(name, base, ns)
         cls.__doc__ = _class_doc(type_path, ctor, doc, table)
         classes[type_path] = cls

@@ -22,7 +22,7 @@ def a_of(n_dot_v: npt.ArrayLike, alpha: npt.ArrayLike, *, dtype: npt.DTypeLike =
     """Beckmann Smith argument a = 1 / (alpha tan(theta)), Walter et al. 2007 eq. 27."""
     ...
 
-def lambda(n_dot_v: npt.ArrayLike, alpha: npt.ArrayLike, *, dtype: npt.DTypeLike = None, lanes: bool = True, threads: bool = True, check: bool = False) -> Any:
+def lambda_(n_dot_v: npt.ArrayLike, alpha: npt.ArrayLike, *, dtype: npt.DTypeLike = None, lanes: bool = True, threads: bool = True, check: bool = False) -> Any:
     """Exact Beckmann Smith Lambda (exp(-a^2) / (a sqrt(pi)) - erfc(a)) / 2, Heitz 2014 eq. 83."""
     ...
 
@@ -51,7 +51,7 @@ class Beckmann(Parameters):
         """Anisotropic Beckmann NDF D(m) on a local-frame normal, Walter et al. 2007 eq. 25; Heitz 2014 eq. 80."""
         ...
     @staticmethod
-    def lambda(alpha_x: npt.ArrayLike, alpha_y: npt.ArrayLike, w_x: npt.ArrayLike, w_y: npt.ArrayLike, w_z: npt.ArrayLike, *, dtype: npt.DTypeLike = None, lanes: bool = True, threads: bool = True, check: bool = False) -> Any:
+    def lambda_(alpha_x: npt.ArrayLike, alpha_y: npt.ArrayLike, w_x: npt.ArrayLike, w_y: npt.ArrayLike, w_z: npt.ArrayLike, *, dtype: npt.DTypeLike = None, lanes: bool = True, threads: bool = True, check: bool = False) -> Any:
         """Anisotropic Beckmann exact Smith Lambda(w), Heitz 2014 eq. 83."""
         ...
     @staticmethod

@@ -22,7 +22,7 @@ def d_aniso(n_dot_h: npt.ArrayLike, t_dot_h: npt.ArrayLike, b_dot_h: npt.ArrayLi
     """Anisotropic GGX NDF from the half vector's frame components, Heitz 2014 eq. 85; Burley 2012."""
     ...
 
-def lambda(n_dot_v: npt.ArrayLike, alpha: npt.ArrayLike, *, dtype: npt.DTypeLike = None, lanes: bool = True, threads: bool = True, check: bool = False) -> Any:
+def lambda_(n_dot_v: npt.ArrayLike, alpha: npt.ArrayLike, *, dtype: npt.DTypeLike = None, lanes: bool = True, threads: bool = True, check: bool = False) -> Any:
     """GGX Smith Lambda (sqrt(1 + alpha^2 tan^2) - 1) / 2, Heitz 2014 eq. 86."""
     ...
 
@@ -67,7 +67,7 @@ class Ggx(Parameters):
         """Anisotropic GGX NDF D(m) on a local-frame normal, Walter et al. 2007 eq. 33; Heitz 2014 eq. 85."""
         ...
     @staticmethod
-    def lambda(alpha_x: npt.ArrayLike, alpha_y: npt.ArrayLike, w_x: npt.ArrayLike, w_y: npt.ArrayLike, w_z: npt.ArrayLike, *, dtype: npt.DTypeLike = None, lanes: bool = True, threads: bool = True, check: bool = False) -> Any:
+    def lambda_(alpha_x: npt.ArrayLike, alpha_y: npt.ArrayLike, w_x: npt.ArrayLike, w_y: npt.ArrayLike, w_z: npt.ArrayLike, *, dtype: npt.DTypeLike = None, lanes: bool = True, threads: bool = True, check: bool = False) -> Any:
         """Anisotropic GGX Smith Lambda(w), Heitz 2014 eq. 86."""
         ...
     @staticmethod
