@@ -32,7 +32,10 @@ from . import integrate  # noqa: E402  (after the generated modules, which it do
 
 def kernel(path):
     """The function of a kernel by its Rust path (``"ggx::Ggx::d"``) or dotted path."""
-    path = path.replace(".", "::").removeprefix("brdf::")
+    import keyword
+
+    parts = path.replace(".", "::").removeprefix("brdf::").split("::")
+    path = "::".join(p[:-1] if p.endswith("_") and keyword.iskeyword(p[:-1]) else p for p in parts)
     for info in KERNELS:
         if info["path"] == path:
             parts = path.split("::")
