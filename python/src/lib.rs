@@ -152,43 +152,57 @@ where
     L::Scalar: Copy,
 {
     let w = L::LANES;
-    let mut x: Vec<L> = ins.iter().map(|s| L::from_scalar(s[0])).collect();
-    let mut y: Vec<L> = vec![L::ZERO; outs.len()];
+    // UNROLL groups are gathered, evaluated back to back and stored: the calls carry no
+    // dependency on each other, so the processor overlaps their latency chains.
+    const UNROLL: usize = 4;
+    let init: Vec<L> = ins.iter().map(|s| L::from_scalar(s[0])).collect();
+    let mut x: [Vec<L>; UNROLL] = core::array::from_fn(|_| init.clone());
+    let mut y: [Vec<L>; UNROLL] = core::array::from_fn(|_| vec![L::ZERO; outs.len()]);
     let mut start = 0;
     while start < n {
-        let len = w.min(n - start);
-        for (xi, s) in x.iter_mut().zip(ins) {
-            if s.len() != 1 {
-                let g = &s[start..start + len];
-                *xi = if len == w {
-                    L::load(g)
-                } else {
-                    L::from_fn(|i| g[i.min(len - 1)])
-                };
+        let block = (n - start).div_ceil(w).min(UNROLL);
+        for (g, xg) in x.iter_mut().enumerate().take(block) {
+            let s0 = start + g * w;
+            let len = w.min(n - s0);
+            for (xi, s) in xg.iter_mut().zip(ins) {
+                if s.len() != 1 {
+                    let sl = &s[s0..s0 + len];
+                    *xi = if len == w {
+                        L::load(sl)
+                    } else {
+                        L::from_fn(|i| sl[i.min(len - 1)])
+                    };
+                }
             }
         }
-        eval(&x, &mut y);
-        for (o, v) in outs.iter_mut().zip(&y) {
-            v.store(&mut o[start..start + len]);
+        for (xg, yg) in x.iter().zip(y.iter_mut()).take(block) {
+            eval(xg, yg);
         }
-        if w > 1 && y.iter().any(|v| v.is_nan().any()) {
-            // A lane holding NaN may owe it to its neighbours: a kernel that builds a
-            // validated parameter type (`Ggx::new`, `PhongDiffuseSpecular::new`) gets NaN in
-            // every lane when one lane's parameters are invalid (the constructor checks all
-            // lanes). Such a lane is evaluated again alone, its row in every lane, so each
-            // element's result depends on its own inputs only, as numpy users expect.
-            for i in 0..len {
-                if y.iter().any(|v| is_nan(v.lane(i))) {
-                    let xi: Vec<L> = x.iter().map(|v| L::from_scalar(v.lane(i))).collect();
-                    let mut yi = vec![L::ZERO; y.len()];
-                    eval(&xi, &mut yi);
-                    for (o, v) in outs.iter_mut().zip(&yi) {
-                        o[start + i] = v.lane(0);
+        for g in 0..block {
+            let s0 = start + g * w;
+            let len = w.min(n - s0);
+            for (o, v) in outs.iter_mut().zip(&y[g]) {
+                v.store(&mut o[s0..s0 + len]);
+            }
+            if w > 1 && y[g].iter().any(|v| v.is_nan().any()) {
+                // A lane holding NaN may owe it to its neighbours: a kernel that builds a
+                // validated parameter type (`Ggx::new`, `PhongDiffuseSpecular::new`) gets NaN
+                // in every lane when one lane's parameters are invalid (the constructor checks
+                // all lanes). Such a lane is evaluated again alone, its row in every lane, so
+                // each element's result depends on its own inputs only, as numpy users expect.
+                for i in 0..len {
+                    if y[g].iter().any(|v| is_nan(v.lane(i))) {
+                        let xi: Vec<L> = x[g].iter().map(|v| L::from_scalar(v.lane(i))).collect();
+                        let mut yi = vec![L::ZERO; y[g].len()];
+                        eval(&xi, &mut yi);
+                        for (o, v) in outs.iter_mut().zip(&yi) {
+                            o[s0 + i] = v.lane(0);
+                        }
                     }
                 }
             }
         }
-        start += len;
+        start += block * w;
     }
 }
 

@@ -98,7 +98,8 @@ def ndf_projected_area(d, dtype=np.float64):
 
 def smith_weak_furnace(d, g1, wo, dtype=np.float64):
     """Integral of G1(wo, m) D(m) max(0, wo.m) dm / cos(theta_o): 1 for a Smith G1 that
-    matches D (Heitz 2014, "Understanding the Masking-Shadowing Function", eq. 8).
+    matches D (Heitz 2014, "Understanding the Masking-Shadowing Function in Microfacet-Based
+    BRDFs", eq. 18 and section 5).
 
     d(m) -> n values; g1(wo, m) -> n values (wo repeated). wo.z must be > 0 (else NaN).
     The error estimate carries the crate's KINK_SAFETY factor. Returns an Estimate.
