@@ -9,6 +9,7 @@
 //! | [`kernels`] | the table: path, summary, arguments and domains, outputs, constraints, doc |
 //! | [`eval_f64`], [`eval_f32`] | one kernel over contiguous 1-D arrays (length n, or 1 to broadcast) |
 //! | [`eval_row`] | one kernel on one row, scalar or lane entry: the tests' reference |
+//! | [`check_rows`] | the CLI's domain and constraint checks on every row (`check=True`) |
 //! | [`validate`] | a parameter type's constructor on its arguments: `ValueError` naming the bad one |
 //! | [`integrate`] | `brdf::integrate`'s integrators over a Python callable on arrays of directions |
 
@@ -366,6 +367,53 @@ fn eval_row(index: usize, row: Vec<f64>, f32: bool, lanes: bool) -> PyResult<Vec
     Ok(out)
 }
 
+/// The CLI's input check on every row (inputs as `f64` arrays of length n or 1, each value
+/// exactly a value of the float type): `ValueError` for the first row with an argument
+/// outside its domain ([`brdf_ref::Domain::contains_as`], NaN included) or a broken relation
+/// between arguments ([`Kernel::broken_constraint`]: unit vectors, orderings), naming the
+/// arguments and the element's flat index.
+#[pyfunction]
+fn check_rows(index: usize, inputs: Vec<PyReadonlyArray1<'_, f64>>, f32: bool) -> PyResult<()> {
+    let k = kernel(index)?;
+    let lens: Vec<usize> = inputs.iter().map(|a| a.len()).collect();
+    if lens.contains(&0) {
+        return Ok(());
+    }
+    let n = common_len(&lens, k.args.len())?;
+    let cols: Vec<&[f64]> = inputs
+        .iter()
+        .map(|a| a.as_slice())
+        .collect::<Result<_, _>>()
+        .map_err(|e| PyValueError::new_err(format!("arrays must be contiguous: {e}")))?;
+    let ty = if f32 {
+        brdf_ref::Float::F32
+    } else {
+        brdf_ref::Float::F64
+    };
+    let dotted = k.path.replace("::", ".");
+    let mut row = vec![0.0; cols.len()];
+    for r in 0..n {
+        for ((v, c), a) in row.iter_mut().zip(&cols).zip(k.args) {
+            *v = if c.len() == 1 { c[0] } else { c[r] };
+            if !a.domain.contains_as(*v, ty) {
+                return Err(PyValueError::new_err(format!(
+                    "brdf.{dotted}: argument `{}` = {} (element {r}) lies outside its domain {}",
+                    a.name, *v, a.domain.text
+                )));
+            }
+        }
+        if let Some(b) = k.broken_constraint(&row, ty) {
+            let names: Vec<&str> = b.args.iter().map(|&i| k.args[i].name).collect();
+            return Err(PyValueError::new_err(format!(
+                "brdf.{dotted}: arguments {} (element {r}): {}",
+                names.join(", "),
+                b.text
+            )));
+        }
+    }
+    Ok(())
+}
+
 #[pymodule]
 fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(kernels, m)?)?;
@@ -373,6 +421,7 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(eval_f64, m)?)?;
     m.add_function(wrap_pyfunction!(eval_f32, m)?)?;
     m.add_function(wrap_pyfunction!(eval_row, m)?)?;
+    m.add_function(wrap_pyfunction!(check_rows, m)?)?;
     m.add_function(wrap_pyfunction!(params::validate, m)?)?;
     m.add_function(wrap_pyfunction!(params::param_types, m)?)?;
     m.add_function(wrap_pyfunction!(integrators::integrate, m)?)?;

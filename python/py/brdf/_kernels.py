@@ -41,10 +41,11 @@ Options (keyword only):
              the lane polynomials of exp, ln, sin, cos, atan, acos, asin (1 to 3 ULP; the
              crate's accuracy table and cli/tests/cli/lanes.rs list them).
   threads -- True (default): arrays above 65536 elements are split over all cores.
-  check   -- True: raise ValueError naming the first argument outside its documented
-             domain (NaN included) or a direction that is not a unit vector; False
-             (default): the crate's rule, a NaN in any input gives NaN out and an invalid
-             parameter gives NaN."""
+  check   -- True: the reference CLI's input checks, raising ValueError naming the
+             first argument outside its documented domain (NaN included) or the
+             arguments of a broken relation (a direction that is not a unit vector, an
+             ordering such as cos_outer <= cos_inner); False (default): the crate's rule,
+             a NaN in any input gives NaN out and an invalid parameter gives NaN."""
 
 
 def _rust_to_dotted(path: str) -> str:
@@ -85,34 +86,6 @@ def _resolve_dtype(path, names, arrays, values, dtype):
     return strong.pop() if strong else np.dtype(np.float64)
 
 
-def _check_domains(path, info, flat, dt):
-    """ValueError naming the first argument outside its domain or the first non-unit vector."""
-    for (name, text, lo, hi, lo_open, hi_open, integer), a in zip(info["args"], flat):
-        lo_t, hi_t = dt.type(lo), dt.type(hi)
-        with np.errstate(invalid="ignore"):
-            ok = (a > lo_t) if lo_open else (a >= lo_t)
-            ok &= (a < hi_t) if hi_open else (a <= hi_t)
-            if integer:
-                ok &= np.floor(a) == a
-        if not np.all(ok):
-            bad = a[np.argmin(ok)] if a.size > 1 else a[0]
-            raise ValueError(
-                f"brdf.{_rust_to_dotted(path)}: argument `{name}` = {float(bad)} lies outside its "
-                f"domain {text}"
-            )
-    for i, j, k in info["unit_vectors"]:
-        x, y, z = (flat[m].astype(np.float64) for m in (i, j, k))
-        length = np.sqrt(x * x + y * y + z * z)
-        ok = np.abs(length - 1.0) <= 1e-3
-        if not np.all(ok):
-            names = ", ".join(info["args"][m][0] for m in (i, j, k))
-            bad = length[np.argmin(ok)] if length.size > 1 else length[0]
-            raise ValueError(
-                f"brdf.{_rust_to_dotted(path)}: ({names}) has length {float(bad)}, not a unit vector "
-                "(tolerance 1e-3)"
-            )
-
-
 def call(index, info, values, dtype=None, lanes=True, threads=True, check=False, result=None):
     """Evaluates kernel `index` on `values` (one per argument) with numpy broadcasting."""
     path = info["path"]
@@ -136,7 +109,9 @@ def call(index, info, values, dtype=None, lanes=True, threads=True, check=False,
         else:
             flat.append(np.ascontiguousarray(np.broadcast_to(a, shape)).reshape(-1))
     if check:
-        _check_domains(path, info, flat, dt)
+        # The reference CLI's own checks (each argument's domain as the float type rounds
+        # its ends, then the relations: unit vectors, orderings), on the values as given.
+        _native.check_rows(index, [f.astype(np.float64) for f in flat], dt == np.float32)
     evaluate = _native.eval_f32 if dt == np.float32 else _native.eval_f64
     n = math.prod(shape)
     outs = [np.empty(n, dt) for _ in info["outputs"]]
