@@ -29,8 +29,9 @@ mod docs {
 mod integrators;
 mod params;
 
-/// Elements per thread task: below twice this an array runs on the calling thread (a rayon
-/// hand-off costs a few microseconds, about 4000 elements of a cheap kernel).
+/// Elements per thread task: below twice this an array runs on the calling thread, so small
+/// arrays never pay the pool's hand-off; 32768 elements are tens of microseconds of work even
+/// for the cheapest kernel (python/bench.py), well above a hand-off.
 const CHUNK: usize = 1 << 15;
 
 fn kernel(index: usize) -> PyResult<&'static Kernel> {
