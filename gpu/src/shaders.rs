@@ -294,3 +294,136 @@ pub fn translate(module: &Module, info: &ModuleInfo) -> Result<Translations, Str
         msl: msl_src,
     })
 }
+
+/// The modules of the kernels a shader calls, whose every kernel must have a WGSL twin or a
+/// reason in [`NO_TWIN`]: Fresnel, GGX and Beckmann, Cook-Torrance, the diffuse lobes, the
+/// Phong family, the metallic-roughness material, the punctual lights, the tonemappers and
+/// the colour transfer functions.
+pub const TWINNED_MODULES: &[&str] = &[
+    "fresnel",
+    "ggx",
+    "beckmann",
+    "cook_torrance",
+    "diffuse",
+    "phong",
+    "material",
+    "lights",
+    "tonemap",
+    "color",
+    "microfacet",
+];
+
+/// Kernels without a WGSL twin, each with the reason: an exact path, or a path prefix ending
+/// in `::` for a whole module.
+pub const NO_TWIN: &[(&str, &str)] = &[
+    (
+        "vec3::",
+        "vector algebra WGSL has built in (dot, cross, length, normalize, min, max, abs)",
+    ),
+    (
+        "frame::Frame::",
+        "a tangent frame of its normal: shaders build theirs from the mesh's tangents",
+    ),
+    (
+        "fresnel::average_dielectric",
+        "a numerical integral evaluated in f64 only; fresnel_average_dielectric_fit is its \
+         shader form",
+    ),
+    (
+        "tonemap::ev100_from_camera",
+        "camera exposure from f64 settings, computed once on the CPU, not per pixel",
+    ),
+    (
+        "diffuse::oren_nayar_full",
+        "not written yet: the full Oren-Nayar model's angles and tangents (acos, tan) need \
+         their own bound terms",
+    ),
+    (
+        "diffuse::OrenNayarFull::eval",
+        "as diffuse::oren_nayar_full",
+    ),
+    (
+        "diffuse::eon_cltc_sample",
+        "a sampler: the samplers have no twins yet",
+    ),
+    (
+        "diffuse::eon_cltc_pdf",
+        "a sampler's pdf: with the samplers",
+    ),
+    (
+        "diffuse::eon_sample",
+        "a sampler: the samplers have no twins yet",
+    ),
+    ("diffuse::eon_pdf", "a sampler's pdf: with the samplers"),
+    (
+        "diffuse::Eon::sample",
+        "a sampler: the samplers have no twins yet",
+    ),
+    ("diffuse::Eon::pdf", "a sampler's pdf: with the samplers"),
+    (
+        "material::MetallicRoughness::pdf",
+        "a sampler's pdf: with the samplers",
+    ),
+    (
+        "material::MetallicRoughness::sample",
+        "a sampler: the samplers have no twins yet",
+    ),
+    (
+        "material::MetallicRoughness::sample_weighted",
+        "a sampler: the samplers have no twins yet",
+    ),
+    (
+        "tonemap::agx_minimal",
+        "not written yet: AgX's log2 encoding, curve and looks",
+    ),
+    ("tonemap::agx_threejs", "not written yet: with AgX"),
+    ("tonemap::agx_filament", "not written yet: with AgX"),
+    (
+        "tonemap::Operator::apply",
+        "not written yet: it dispatches to every operator, AgX included",
+    ),
+    (
+        "sampling::",
+        "samplers and their pdfs: not written yet (cosine_hemisphere_pdf and the reflection \
+         Jacobian have twins)",
+    ),
+    (
+        "engine::Convention::",
+        "not written yet: each engine's shader has its own source, which this table of \
+         conventions reproduces on the CPU",
+    ),
+    (
+        "ibl::prefilter::",
+        "precomputation of prefiltered environment maps, run once per map, not per pixel",
+    ),
+    (
+        "ibl::energy::",
+        "energy-compensation tables and their fits: not written yet (a shader reads them from \
+         a texture)",
+    ),
+    (
+        "ibl::irradiance::",
+        "not written yet: spherical-harmonics projection and evaluation",
+    ),
+];
+
+/// Why `path` has no WGSL twin, from [`NO_TWIN`].
+#[must_use]
+pub fn no_twin_reason(path: &str) -> Option<&'static str> {
+    NO_TWIN
+        .iter()
+        .find(|(p, _)| {
+            if p.ends_with("::") {
+                path.starts_with(p)
+            } else {
+                path == *p
+            }
+        })
+        .map(|(_, why)| *why)
+}
+
+/// The module of a kernel's path (`ggx` for `ggx::Ggx::d`, `ibl` for `ibl::dfg::karis`).
+#[must_use]
+pub fn module_of(path: &str) -> &str {
+    path.split("::").next().unwrap_or(path)
+}
