@@ -4,7 +4,8 @@
 //! functions are named by the Rust kernel's path with `::` written `_` (`ggx::d` is `ggx_d`,
 //! `fresnel::schlick_f90` is `fresnel_schlick_f90`), take the Rust kernel's arguments in the
 //! same order (a `V3` argument as its three components `w_x, w_y, w_z`, as the reference CLI
-//! `brdf-ref --list` prints them), and use the same numerically stable forms (GGX D's
+//! `brdf-ref --list` prints them; an argument whose name WGSL reserves takes a trailing
+//! underscore: `tonemap_Operator_apply(operator_, ...)`), and use the same numerically stable forms (GGX D's
 //! cancellation-free denominator (1 - c)(1 + c) + c^2 alpha^2, the alpha clamps
 //! `ALPHA_MIN`/`ALPHA_MAX`, the caps at the largest finite value). Multi-channel results are
 //! `vec3<f32>` (`vec2<f32>` for two); an enumerated parameter (the material's diffuse
@@ -94,8 +95,10 @@ pub const LIGHTS: &str = include_str!("../wgsl/lights.wgsl");
 
 /// The twins of `brdf::tonemap`'s sanitize, exposure, Reinhard (plain, extended, on
 /// luminance, extended on luminance, Jodie), Narkowicz's and Hill's ACES, Khronos PBR Neutral,
-/// and Hable's, Lottes' and Uchimura's curves (from their parameters), and of `brdf::color`'s
-/// sRGB and Rec.709 transfer, gamma and luminance.
+/// Hable's, Lottes' and Uchimura's curves (from their parameters), AgX (minimal, three.js's,
+/// Filament's, the looks a `u32`) and `Operator::apply` (the operator a `u32` index into
+/// `Operator::all()`), and of `brdf::color`'s sRGB and Rec.709 transfer, gamma, luminance
+/// and matrix product.
 pub const TONEMAP: &str = include_str!("../wgsl/tonemap.wgsl");
 
 /// The twins of `brdf::material`'s F0 from reflectance, the metallic-roughness BRDF from dot

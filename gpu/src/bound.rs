@@ -321,15 +321,21 @@ impl<'m> Interp<'m> {
                 } else {
                     (*reject, *accept)
                 };
-                let c = self.num(fr, chosen);
-                if stable {
-                    Val::Num(c)
-                } else {
-                    let o = self.num(fr, other);
-                    Val::Num(Num {
-                        v: c.v,
-                        e: c.e.max((o.v - c.v).abs() + o.e),
-                    })
+                // Vectors select as a whole (a scalar condition): component by component.
+                let union = |c: Num, o: Num| Num {
+                    v: c.v,
+                    e: c.e.max((o.v - c.v).abs() + o.e),
+                };
+                match (self.expr(fr, chosen), stable) {
+                    (c, true) => c,
+                    (Val::Num(c), false) => Val::Num(union(c, self.num(fr, other))),
+                    (Val::Vec(c), false) => match self.expr(fr, other) {
+                        Val::Vec(o) => {
+                            Val::Vec(c.iter().zip(&o).map(|(&c, &o)| union(c, o)).collect())
+                        }
+                        x => panic!("select between a vector and {x:?}"),
+                    },
+                    (x, _) => panic!("select of {x:?} is not modelled"),
                 }
             }
             Expression::Math {
