@@ -1,7 +1,8 @@
 // brdf: diffuse lobes, the twins of the Rust module `diffuse` (Lambert, the qualitative
 // Oren-Nayar model and its A and B, Burley and its renormalized form, the diffuse-Fresnel
 // couplings, and the parameter types' `eval` on local-frame directions). Needs common.wgsl and
-// fresnel.wgsl. Also Fujii's Oren-Nayar and EON (exact and fitted) with its albedos.
+// fresnel.wgsl. Also the full and Fujii's Oren-Nayar and EON (exact and fitted) with its
+// albedos.
 
 // 0 unless both cosines are above the horizon (domain::above_horizon).
 fn brdf_above_horizon(n_dot_v: f32, n_dot_l: f32, value: f32) -> f32 {
@@ -370,4 +371,75 @@ fn diffuse_Eon_albedo(rho: f32, sigma: f32, wo_x: f32, wo_y: f32, wo_z: f32) -> 
 // `diffuse::Eon::albedo_approx`: diffuse_eon_albedo_approx(wo.z, rho, sigma).
 fn diffuse_Eon_albedo_approx(rho: f32, sigma: f32, wo_x: f32, wo_y: f32, wo_z: f32) -> f32 {
     return diffuse_eon_albedo_approx(wo_z, rho, sigma);
+}
+
+// The angle theta = acos(c) as a fraction of a right angle, 2 theta / pi, for c in [0, 1]: as
+// 1 - (2 / pi) asin(c) below c = 1/2 and 2 (2 / pi) asin(sqrt((1 - c) / 2)) above (acos's
+// half-angle form, without the cancellation of pi/2 - asin(c) near c = 1).
+fn brdf_angle_over_right_angle(c: f32) -> f32 {
+    let near_right = c < 0.5;
+    let y = asin(select(sqrt(0.5 * (1.0 - c)), c, near_right));
+    // 2 / pi.
+    let scaled = 0.6366197723675814 * y;
+    return select(2.0 * scaled, 1.0 - scaled, near_right);
+}
+
+// The full Oren-Nayar model (Oren and Nayar 1994, "Generalization of Lambert's Reflectance
+// Model", eqs. 27-30 with the interreflection term L2; the crate's `diffuse::oren_nayar_full`):
+// rho / pi (L1 + L2), L1 = C1 + cos(phi) C2 tan(beta) + (1 - |cos(phi)|) C3 tan((alpha +
+// beta) / 2), L2 = 0.17 rho sigma^2 / (sigma^2 + 0.13) (1 - cos(phi) (2 beta / pi)^2), alpha
+// and beta the larger and smaller polar angle, C1 = A, C2 = 0.45 sigma^2 / (sigma^2 + 0.09)
+// (sin(alpha), or sin(alpha) - (2 beta / pi)^3 where cos(phi) < 0), C3 = 0.125 sigma^2 /
+// (sigma^2 + 0.09) (4 alpha beta / pi^2)^2. In the Rust kernel's forms: 1 - |cos(phi)| as
+// G / (P (P + |s|)) with the Gram determinant G = (1 - n.v^2)(1 - n.l^2) - s^2 (as 1 - |s / P|
+// it cancels for opposite grazing directions), C2's difference near grazing as
+// x (3 - 3 x + x^2) - cos^2(alpha) / (1 + sin(alpha)), x = 1 - 2 beta / pi, the tangents'
+// denominators floored at the smallest normal, L1 floored at 0; cos(phi) = 0 at a pole.
+// rho in [0, 1], sigma >= 0 (radians); 0 below the horizon.
+fn diffuse_oren_nayar_full(
+    n_dot_v: f32, n_dot_l: f32, v_dot_l: f32, rho: f32, sigma: f32,
+) -> f32 {
+    let cv = min(n_dot_v, 1.0);
+    let cl = min(n_dot_l, 1.0);
+    let sin2_v = fma(-cv, cv, 1.0);
+    let sin2_l = fma(-cl, cl, 1.0);
+    let sin_v = sqrt(sin2_v);
+    let sin_l = sqrt(sin2_l);
+    let v_is_alpha = cv <= cl;
+    let cos_alpha = min(cv, cl);
+    let cos_beta = max(cv, cl);
+    let sin_alpha = select(sin_l, sin_v, v_is_alpha);
+    let sin_beta = select(sin_v, sin_l, v_is_alpha);
+    let a = brdf_angle_over_right_angle(saturate(cos_alpha));
+    let b = brdf_angle_over_right_angle(saturate(cos_beta));
+    let s = fma(-n_dot_v, n_dot_l, v_dot_l);
+    let p = sin_v * sin_l;
+    let at_pole = !(p > 0.0);
+    let safe_p = select(p, 1.0, at_pole);
+    let cos_phi = clamp(select(s / safe_p, 0.0, at_pole), -1.0, 1.0);
+    let gram = max(sin2_v * sin2_l - s * s, 0.0);
+    let one_minus_abs_cos_phi = clamp(select(gram / (safe_p * (safe_p + abs(s))), 1.0, at_pole),
+        0.0, 1.0);
+    let tan_beta = sin_beta / max(cos_beta, 1.17549435e-38);
+    let tan_half = (sin_alpha + sin_beta) / max(cos_alpha + cos_beta, 1.17549435e-38);
+    let x = 1.0 - b;
+    let cubic = x * (3.0 + x * (x - 3.0));
+    let grazing_difference = cubic - cos_alpha * cos_alpha / (1.0 + sin_alpha);
+    let difference = select(sin_alpha - b * b * b, grazing_difference, cos_beta < 0.5);
+    let k = brdf_oren_nayar_rational(sigma, 0.09);
+    let c2 = 0.45 * k * select(difference, sin_alpha, cos_phi >= 0.0);
+    let ab = a * b;
+    let c3 = 0.125 * k * (ab * ab);
+    let l1 = max(diffuse_oren_nayar_a(sigma) + cos_phi * c2 * tan_beta
+        + one_minus_abs_cos_phi * c3 * tan_half, 0.0);
+    let l2 = rho * (0.17 * brdf_oren_nayar_rational(sigma, 0.13)) * (1.0 - cos_phi * (b * b));
+    return brdf_above_horizon(n_dot_v, n_dot_l, BRDF_FRAC_1_PI * rho * (l1 + l2));
+}
+
+// `diffuse::OrenNayarFull` on local-frame directions, v.l = wo.wi.
+fn diffuse_OrenNayarFull_eval(
+    rho: f32, sigma: f32, wo_x: f32, wo_y: f32, wo_z: f32, wi_x: f32, wi_y: f32, wi_z: f32,
+) -> f32 {
+    let v_dot_l = brdf_diffuse_dot(wo_x, wo_y, wo_z, wi_x, wi_y, wi_z);
+    return diffuse_oren_nayar_full(wo_z, wi_z, v_dot_l, rho, sigma);
 }

@@ -349,15 +349,6 @@ pub const NO_TWIN: &[(&str, &str)] = &[
         "camera exposure from f64 settings, computed once on the CPU, not per pixel",
     ),
     (
-        "diffuse::oren_nayar_full",
-        "not written yet: the full Oren-Nayar model's angles and tangents (acos, tan) need \
-         their own bound terms",
-    ),
-    (
-        "diffuse::OrenNayarFull::eval",
-        "as diffuse::oren_nayar_full",
-    ),
-    (
         "diffuse::eon_cltc_sample",
         "a sampler: the samplers have no twins yet",
     ),
