@@ -47,13 +47,8 @@ fn no_reason_is_left_for_a_kernel_with_a_twin() {
                 p == entry
             }
         };
-        if entry.ends_with("::") {
-            if !without.iter().any(covers) {
-                stale.push(*entry);
-            }
-        } else if with.iter().map(|t| t.kernel.path).any(|p| covers(&p)) {
-            stale.push(*entry);
-        } else if !without.iter().any(covers) {
+        let twinned = !entry.ends_with("::") && with.iter().any(|t| covers(&t.kernel.path));
+        if twinned || !without.iter().any(covers) {
             stale.push(*entry);
         }
     }
