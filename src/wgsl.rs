@@ -16,7 +16,7 @@
 //! [`COMMON`] must come first, then each family after the families it calls into
 //! ([`Family::needs`]: [`COOK_TORRANCE`] needs [`GGX`], [`FRESNEL`] and [`BECKMANN`],
 //! [`DIFFUSE`] needs [`FRESNEL`], [`MATERIAL`] needs [`GGX`], [`FRESNEL`], [`BECKMANN`] and
-//! [`COOK_TORRANCE`]). No
+//! [`COOK_TORRANCE`], [`SAMPLING`] needs [`GGX`] and [`BECKMANN`]). No
 //! family defines a name another family defines, so any such subset concatenated after
 //! [`COMMON`] is one valid WGSL module:
 //!
@@ -111,7 +111,9 @@ pub const MATERIAL: &str = include_str!("../wgsl/material.wgsl");
 /// Lazarov, Narkowicz's two), the split-sum specular, the roughness-mip mappings.
 pub const IBL: &str = include_str!("../wgsl/ibl.wgsl");
 
-/// The twins of `brdf::sampling`'s cosine-hemisphere pdf and reflection Jacobian.
+/// The twins of `brdf::sampling`'s cosine-hemisphere sampler and pdf, reflection Jacobian,
+/// GGX visible-normal samplers (Heitz's and by spherical caps), visible-normal pdf and GGX
+/// reflection pdf. Needs [`GGX`] and [`BECKMANN`] before it.
 pub const SAMPLING: &str = include_str!("../wgsl/sampling.wgsl");
 
 /// [`COMMON`] followed by every family, each after the families it needs: one module defining
@@ -204,6 +206,6 @@ pub const FAMILIES: &[Family] = &[
     Family {
         name: "sampling",
         source: SAMPLING,
-        needs: &[],
+        needs: &["ggx", "beckmann"],
     },
 ];

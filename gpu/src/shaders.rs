@@ -380,8 +380,9 @@ pub const NO_TWIN: &[(&str, &str)] = &[
     ),
     (
         "sampling::",
-        "samplers and their pdfs: not written yet (cosine_hemisphere_pdf and the reflection \
-         Jacobian have twins)",
+        "not written yet: the Beckmann samplers (erf_inv), the D cos samplers and the \
+         reflection samplers with their weights (the cosine-hemisphere and GGX visible-normal \
+         samplers and the pdfs have twins)",
     ),
     (
         "engine::Convention::",
