@@ -112,8 +112,8 @@ pub const MATERIAL: &str = include_str!("../wgsl/material.wgsl");
 pub const IBL: &str = include_str!("../wgsl/ibl.wgsl");
 
 /// The twins of `brdf::sampling`'s cosine-hemisphere sampler and pdf, reflection Jacobian,
-/// GGX visible-normal samplers (Heitz's and by spherical caps), visible-normal pdf and GGX
-/// reflection pdf. Needs [`GGX`] and [`BECKMANN`] before it.
+/// GGX D cos and visible-normal samplers (Heitz's and by spherical caps), D cos and
+/// visible-normal pdfs and GGX reflection pdf. Needs [`GGX`] and [`BECKMANN`] before it.
 pub const SAMPLING: &str = include_str!("../wgsl/sampling.wgsl");
 
 /// [`COMMON`] followed by every family, each after the families it needs: one module defining

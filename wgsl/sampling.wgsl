@@ -1,8 +1,8 @@
 // brdf: samplers and the densities a shader needs to weight its samples, the twins of the
 // Rust module `sampling` (the cosine-hemisphere sampler and pdf, the half-vector-to-reflection
-// Jacobian, GGX's visible-normal samplers, the visible-normal pdf and GGX's reflection pdf).
-// Needs common.wgsl, ggx.wgsl and beckmann.wgsl. The Beckmann samplers, the D cos samplers and
-// the reflection samplers with their weights have no twin yet.
+// Jacobian, GGX's D cos and visible-normal samplers, the D cos and visible-normal pdfs and
+// GGX's reflection pdf). Needs common.wgsl, ggx.wgsl and beckmann.wgsl. The Beckmann samplers
+// and the reflection samplers with their weights have no twin yet.
 //
 // Angles: WGSL promises sin and cos only on [-pi, pi] (absolute error 2^-11 there), so
 // cos(2 pi u) and sin(2 pi u) are taken as -cos(t) and -sin(t) with t = (2 u - 1) pi', pi' the
@@ -139,4 +139,27 @@ fn sampling_ggx_reflection_pdf(
     let visible = (c > 0.0) & (wo_dot_h > 0.0) & !wi_zero;
     let d = ggx_Ggx_d(alpha_x, alpha_y, h.x, h.y, h.z);
     return select(0.0, min(inv * d, BRDF_F32_MAX), visible);
+}
+
+// The pdf D(m) max(m.z, 0) of sampling the normal from D cos (Walter et al. 2007, eq. 24) for
+// the model `model` (0 = GGX, 1 = Beckmann).
+fn sampling_d_cos_pdf(
+    model: u32, alpha_x: f32, alpha_y: f32, m_x: f32, m_y: f32, m_z: f32,
+) -> f32 {
+    let d = select(ggx_Ggx_d(alpha_x, alpha_y, m_x, m_y, m_z),
+        beckmann_Beckmann_d(alpha_x, alpha_y, m_x, m_y, m_z), model == 1u);
+    return d * max(m_z, 0.0);
+}
+
+// GGX normal sampled from D cos (Walter et al. 2007, eqs. 35-36, anisotropic through the
+// slopes): slope radius sqrt(u1 / (1 - u1)) at the angle 2 pi u2, the normal
+// normalize(-alpha_x s_x, -alpha_y s_y, 1); with its pdf D(m) m.z.
+fn sampling_ggx_d_cos(alpha_x: f32, alpha_y: f32, u1: f32, u2: f32) -> vec4<f32> {
+    let ax = brdf_clamp_alpha(alpha_x);
+    let ay = brdf_clamp_alpha(alpha_y);
+    let uc1 = brdf_clamp_u(u1);
+    let r = sqrt(uc1 / (1.0 - uc1));
+    let cs = brdf_cos_sin_2pi(brdf_clamp_u(u2));
+    let m = brdf_normalize_or_z(vec3<f32>(-ax * (r * cs.x), -ay * (r * cs.y), 1.0));
+    return vec4<f32>(m, sampling_d_cos_pdf(0u, alpha_x, alpha_y, m.x, m.y, m.z));
 }

@@ -380,9 +380,9 @@ pub const NO_TWIN: &[(&str, &str)] = &[
     ),
     (
         "sampling::",
-        "not written yet: the Beckmann samplers (erf_inv), the D cos samplers and the \
-         reflection samplers with their weights (the cosine-hemisphere and GGX visible-normal \
-         samplers and the pdfs have twins)",
+        "not written yet: the Beckmann samplers (erf_inv) and the reflection samplers with \
+         their weights (the cosine-hemisphere, GGX D cos and GGX visible-normal samplers and \
+         the pdfs have twins)",
     ),
     (
         "engine::Convention::",
