@@ -1909,6 +1909,17 @@ pub fn labelled_grid(
         let l = col_labels.get(c).map(String::as_str).unwrap_or("");
         col_lines.push(wrap(&scratch, l, &lab_tf, col_w)?);
     }
+    // When some column labels wrap, break the one-line ones at their last space too, so that
+    // every column reads the same way ("roughness" above its value).
+    if col_lines.iter().any(|l| l.len() > 1) {
+        for lines in &mut col_lines {
+            if let [one] = lines.as_slice()
+                && let Some((a, b)) = one.rsplit_once(' ')
+            {
+                *lines = vec![a.to_string(), b.to_string()];
+            }
+        }
+    }
     let mut row_lines: Vec<Vec<String>> = Vec::new();
     let mut row_w = 0;
     for r in 0..rows {

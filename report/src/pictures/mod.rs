@@ -96,18 +96,20 @@ pub fn write_all(dir: &Path, opt: &Options) -> Res<Vec<String>> {
          them in a Radiance file's environment instead.\n",
         env.name
     );
-    let charts: [(&str, &str, Chart); 6] = [
+    type Job<'a> = Box<dyn FnOnce() -> Chart + Send + 'a>;
+    let (env, dfg) = (&env, &dfg);
+    let charts: [(&str, &str, Job); 6] = [
         (
             "spheres.png",
             "The material chart: roughness across, metallic down, with multiple-scattering \
              compensation.",
-            scenes::material_chart(&env, &dfg, cell),
+            Box::new(move || scenes::material_chart(env, dfg, cell)),
         ),
         (
             "multiscatter.png",
             "Single scattering against compensation: rough metals lose up to a third of their \
              energy without it (white metal, top rows); dielectrics barely change.",
-            scenes::multiscatter_chart(&env, &dfg, cell),
+            Box::new(move || scenes::multiscatter_chart(env, dfg, cell)),
         ),
         (
             "ibl_single_sample.png",
@@ -115,33 +117,58 @@ pub fn write_all(dir: &Path, opt: &Options) -> Res<Vec<String>> {
              normal for diffuse, and a mirror read lerped towards it for rough specular, \
              show the sky's pattern on rough spheres and miss the Fresnel rise of the split \
              sum.",
-            scenes::ibl_bug_chart(&env, &dfg, cell),
+            Box::new(move || scenes::ibl_bug_chart(env, dfg, cell)),
         ),
         (
             "oren_nayar.png",
             "Lambert against the Oren-Nayar family: with the light near the view, rough \
              diffuse surfaces stay bright to the rim (back-scattering); EON also keeps the \
              energy Fujii's and the qualitative models lose.",
-            scenes::oren_nayar_chart(cell),
+            Box::new(move || scenes::oren_nayar_chart(cell)),
         ),
         (
             "phong.png",
             "Classic Phong keeps its peak at ks and grows dim as it tightens; normalized \
              Phong keeps its energy, so tight lobes get bright.",
-            scenes::phong_chart(cell),
+            Box::new(move || scenes::phong_chart(cell)),
         ),
         (
             "furnace.png",
             "White furnace (radiance 1 everywhere, shown at half exposure, no tonemapping): \
              darker than the background is energy lost, brighter is energy created. The \
              compensated GGX and EON vanish.",
-            scenes::furnace_chart(cell),
+            Box::new(move || scenes::furnace_chart(cell)),
         ),
     ];
+    // One thread a chart: they share nothing but the environment, read-only.
+    let done: Vec<(&str, &str, Result<String, String>)> = std::thread::scope(|sc| {
+        let handles: Vec<_> = charts
+            .into_iter()
+            .map(|(name, text, job)| {
+                let h = sc.spawn(move || {
+                    let c = job();
+                    save_chart(dir, name, &c)
+                        .map(|_| c.title)
+                        .map_err(|e| e.to_string())
+                });
+                (name, text, h)
+            })
+            .collect();
+        handles
+            .into_iter()
+            .map(|(name, text, h)| {
+                let r = h
+                    .join()
+                    .unwrap_or_else(|_| Err(format!("{name}: the render panicked")));
+                (name, text, r)
+            })
+            .collect()
+    });
     lap("sphere charts");
-    for (name, text, chart) in &charts {
-        files.push(save_chart(dir, name, chart)?);
-        outln!("{text}\n\n![{}]({name})\n", chart.title);
+    for (name, text, title) in done {
+        let title = title?;
+        outln!("{text}\n\n![{title}]({name})\n");
+        files.push(name.to_string());
     }
 
     let scene = scenes::tonemap_scene(&env, &dfg, (240, 135));
@@ -170,23 +197,45 @@ pub fn write_all(dir: &Path, opt: &Options) -> Res<Vec<String>> {
 
     lap("tonemap strip");
     outln!("### Plots\n");
-    for (f, text) in [
+    let quick = opt.quick;
+    type Plot<'a> = Box<dyn FnOnce() -> Res<String> + Send + 'a>;
+    let plots: [(&str, Plot); 4] = [
         (
-            figures::ndf(dir)?,
             "GGX's long tail against Beckmann's fast fall-off, at equal alpha.",
+            Box::new(|| figures::ndf(dir)),
         ),
-        (figures::g1(dir)?, "Smith masking of the two distributions."),
         (
-            figures::fresnel_curves(dir)?,
+            "Smith masking of the two distributions.",
+            Box::new(|| figures::g1(dir)),
+        ),
+        (
             "Exact dielectric Fresnel over eta, Schlick's approximation for eta = 1.5, and \
              three metals from their complex indices at 650, 550 and 450 nm.",
+            Box::new(|| figures::fresnel_curves(dir)),
         ),
         (
-            figures::albedo_vs_roughness(dir, opt.quick)?,
             "Directional albedo (`brdf::integrate::directional_albedo`) against roughness: \
              what each lobe loses or creates.",
+            Box::new(move || figures::albedo_vs_roughness(dir, quick)),
         ),
-    ] {
+    ];
+    let drawn: Vec<(&str, Result<String, String>)> = std::thread::scope(|sc| {
+        let handles: Vec<_> = plots
+            .into_iter()
+            .map(|(text, job)| (text, sc.spawn(move || job().map_err(|e| e.to_string()))))
+            .collect();
+        handles
+            .into_iter()
+            .map(|(text, h)| {
+                (
+                    text,
+                    h.join().unwrap_or_else(|_| Err("a plot panicked".into())),
+                )
+            })
+            .collect()
+    });
+    for (text, f) in drawn {
+        let f = f?;
         outln!("{text}\n\n![{f}]({f})\n");
         files.push(f);
     }
@@ -195,7 +244,7 @@ pub fn write_all(dir: &Path, opt: &Options) -> Res<Vec<String>> {
 }
 
 /// Width of a sphere cell in the README's material chart, in pixels.
-pub const DOCS_CELL: usize = 48;
+pub const DOCS_CELL: usize = 64;
 
 /// The README's material chart (cells of [`DOCS_CELL`] pixels, procedural environment) at
 /// `path`.
@@ -206,16 +255,11 @@ pub fn docs_material_chart(path: &Path) -> Res {
     let env = Env::procedural();
     let dfg = Dfg::new();
     let mut c = scenes::material_chart(&env, &dfg, DOCS_CELL);
-    c.title = "glTF material: roughness x metallic".into();
+    c.title = "glTF material, perceptual roughness r across".into();
     c.cols = c
         .cols
         .iter()
-        .map(|s| s.replace("roughness ", "r "))
-        .collect();
-    c.rows = c
-        .rows
-        .iter()
-        .map(|s| s.replace("metallic ", "m "))
+        .map(|s| s.replace("roughness ", "r = "))
         .collect();
     let name = path
         .file_name()
@@ -340,7 +384,11 @@ pub fn read_png(path: &Path) -> Res<(usize, usize, Vec<u8>)> {
     Ok((info.width as usize, info.height as usize, buf))
 }
 
-fn write_png(path: &Path, w: usize, h: usize, rgb: &[u8]) -> Res {
+/// Writes an 8-bit RGB PNG.
+///
+/// # Errors
+/// The file cannot be written.
+pub fn write_png(path: &Path, w: usize, h: usize, rgb: &[u8]) -> Res {
     let file = std::io::BufWriter::new(std::fs::File::create(path)?);
     let mut enc = png::Encoder::new(file, u32::try_from(w)?, u32::try_from(h)?);
     enc.set_color(png::ColorType::Rgb);
