@@ -5,9 +5,10 @@
 //! runs through libm and the crate's kernels, whose last bits differ between builds with and
 //! without FMA (and between libm versions); a hash of the PNG would fail on such a machine
 //! although nothing a reader can see changed. A change that matters (a kernel, the
-//! environment, the layout, a label) moves many pixels by many levels. The bound: at most
-//! 0.5 % of the channel values may differ by more than 8 levels of 255, and none of the image
-//! sizes may differ. The Pareto plot is redrawn from its committed data (`docs/pareto.csv`:
+//! environment, the layout, a label) moves many pixels, or all of them a little (an exposure
+//! 8 % higher moves the chart's mean by about a level). The bound: at most 0.2 % of the
+//! channel values may differ by more than 2 levels of 255, the mean difference must stay at
+//! or below 0.25 level, and the sizes must match. The Pareto plot is redrawn from its committed data (`docs/pareto.csv`:
 //! run times are this machine's, so they are data, not something to recompute), and that
 //! data must name exactly the forms the report measures today.
 //!
@@ -23,8 +24,8 @@ fn docs() -> PathBuf {
 
 const REFRESH: &str = "refresh with `cargo run --release -p brdf-report -- --docs`";
 
-/// Decodes both PNGs and fails unless they have the same size and at most 0.5 % of their
-/// channel values differ by more than 8 levels.
+/// Decodes both PNGs and fails unless they have the same size, at most 0.2 % of their channel
+/// values differ by more than 2 levels and the mean difference is at most 0.25 level.
 fn assert_close(committed: &Path, fresh: &Path) {
     let (w0, h0, a) = pictures::read_png(committed)
         .unwrap_or_else(|e| panic!("{}: {e}; {REFRESH}", committed.display()));
@@ -38,13 +39,19 @@ fn assert_close(committed: &Path, fresh: &Path) {
     let far = a
         .iter()
         .zip(&b)
-        .filter(|(x, y)| x.abs_diff(**y) > 8)
+        .filter(|(x, y)| x.abs_diff(**y) > 2)
         .count();
-    let allowed = a.len() / 200;
+    let allowed = a.len() / 500;
+    let mean = a
+        .iter()
+        .zip(&b)
+        .map(|(x, y)| f64::from(x.abs_diff(*y)))
+        .sum::<f64>()
+        / a.len() as f64;
     assert!(
-        far <= allowed,
-        "{}: {far} channel values differ by more than 8 levels from a fresh render (at most \
-         {allowed} may): stale; {REFRESH}",
+        far <= allowed && mean <= 0.25,
+        "{}: {far} channel values differ by more than 2 levels from a fresh render (at most \
+         {allowed} may), mean difference {mean:.3} levels (at most 0.25): stale; {REFRESH}",
         committed.display()
     );
 }

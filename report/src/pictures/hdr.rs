@@ -87,7 +87,7 @@ pub fn decode(d: &[u8]) -> Result<Hdr, String> {
     };
     let mut scan = vec![[0u8; 4]; w];
     for _ in 0..h {
-        let head = [0; 4].map(|k| d.get(pos + k).copied());
+        let head: [Option<u8>; 4] = core::array::from_fn(|k| d.get(pos + k).copied());
         let rle = (8..0x8000).contains(&w)
             && head[0] == Some(2)
             && head[1] == Some(2)

@@ -82,7 +82,8 @@ pub fn write_all(dir: &Path, opt: &Options) -> Res<Vec<String>> {
     lap("environment");
     let dfg = Dfg::new();
     lap("DFG table");
-    let cell = 104;
+    // Quick mode (CI) only checks that every picture is written: smaller cells.
+    let cell = if opt.quick { 56 } else { 104 };
     let mut files = Vec::new();
     outln!("\n## Pictures\n");
     outln!(
@@ -107,16 +108,18 @@ pub fn write_all(dir: &Path, opt: &Options) -> Res<Vec<String>> {
         ),
         (
             "multiscatter.png",
-            "Single scattering against compensation: rough metals lose up to a third of their \
-             energy without it (white metal, top rows); dielectrics barely change.",
+            "Single scattering against compensation: rough metals go dark without it (single-scattering \
+             GGX at roughness 1 reflects about a third of the light arriving head-on: the energy \
+             section's tables); dielectrics, whose diffuse layer takes what the specular layer \
+             leaves, barely change.",
             Box::new(move || scenes::multiscatter_chart(env, dfg, cell)),
         ),
         (
             "ibl_single_sample.png",
             "The single-sample image-light bug beside the fix: one radiance read along the \
-             normal for diffuse, and a mirror read lerped towards it for rough specular, \
-             show the sky's pattern on rough spheres and miss the Fresnel rise of the split \
-             sum.",
+             normal for diffuse, and the mirror read lerped towards it for rough specular, keep \
+             the environment's sharp horizon and checks on spheres that should be smooth; \
+             SH9 irradiance and the prefiltered levels blur them as the lobes do.",
             Box::new(move || scenes::ibl_bug_chart(env, dfg, cell)),
         ),
         (
@@ -269,11 +272,17 @@ pub fn docs_material_chart(path: &Path) -> Res {
     Ok(())
 }
 
-/// The Pareto points as the CSV `docs/pareto.csv` keeps them: `family,form,ns,max_rel`.
+/// The Pareto points as the CSV `docs/pareto.csv` keeps them: `family,form,ns,max_rel`, the
+/// form in double quotes when it holds a comma or a quote (RFC 4180).
 pub fn pareto_csv(points: &[ParetoPoint]) -> String {
     let mut s = String::from("family,form,ns_per_element,max_rel_error\n");
     for p in points {
-        s.push_str(&format!("{},{},{:e},{:e}\n", p.family, p.form, p.x, p.y));
+        let form = if p.form.contains([',', '"']) {
+            format!("\"{}\"", p.form.replace('"', "\"\""))
+        } else {
+            p.form.clone()
+        };
+        s.push_str(&format!("{},{form},{:e},{:e}\n", p.family, p.x, p.y));
     }
     s
 }
@@ -287,13 +296,21 @@ pub fn parse_pareto_csv(s: &str) -> Res<Vec<ParetoPoint>> {
         .skip(1)
         .filter(|l| !l.trim().is_empty())
         .map(|l| {
-            let f: Vec<&str> = l.split(',').collect();
-            let [family, form, x, y] = f.as_slice() else {
-                return Err(format!("pareto csv: `{l}` has not 4 fields").into());
+            // family (no commas), form (quoted when it holds a comma), two numbers.
+            let bad = || format!("pareto csv: `{l}` is not family,form,ns,error");
+            let (family, rest) = l.split_once(',').ok_or_else(bad)?;
+            let mut tail = rest.rsplitn(3, ',');
+            let (y, x, form) = (tail.next(), tail.next(), tail.next());
+            let (Some(y), Some(x), Some(form)) = (y, x, form) else {
+                return Err(bad().into());
+            };
+            let form = match form.strip_prefix('"').and_then(|f| f.strip_suffix('"')) {
+                Some(q) => q.replace("\"\"", "\""),
+                None => form.to_string(),
             };
             Ok(ParetoPoint {
-                family: (*family).into(),
-                form: (*form).into(),
+                family: family.into(),
+                form,
                 x: x.parse()?,
                 y: y.parse()?,
             })
