@@ -95,11 +95,14 @@ pub fn g1(dir: &Path) -> Res<String> {
     Ok(name.into())
 }
 
+/// A metal: name, n and k at 650, 550 and 450 nm, plot colour.
+pub type Metal = (&'static str, [f64; 3], [f64; 3], (u8, u8, u8));
+
 /// Complex indices of refraction (n, k) at 650, 550 and 450 nm: the RGB triplets renderers
 /// commonly take for these metals, close to Johnson and Christy 1972 ("Optical Constants of
 /// the Noble Metals", Phys. Rev. B 6) for gold and copper and to Rakic 1995 (Applied Optics
 /// 34(22)) for aluminium.
-pub const METALS: [(&str, [f64; 3], [f64; 3], (u8, u8, u8)); 3] = [
+pub const METALS: [Metal; 3] = [
     (
         "gold",
         [0.143, 0.374, 1.442],

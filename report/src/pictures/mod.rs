@@ -83,7 +83,7 @@ pub fn write_all(dir: &Path, opt: &Options) -> Res<Vec<String>> {
     let dfg = Dfg::new();
     lap("DFG table");
     // Quick mode (CI) only checks that every picture is written: smaller cells.
-    let cell = if opt.quick { 56 } else { 104 };
+    let cell = if opt.quick { 80 } else { 104 };
     let mut files = Vec::new();
     outln!("\n## Pictures\n");
     outln!(
@@ -174,7 +174,7 @@ pub fn write_all(dir: &Path, opt: &Options) -> Res<Vec<String>> {
         files.push(name.to_string());
     }
 
-    let scene = scenes::tonemap_scene(&env, &dfg, (240, 135));
+    let scene = scenes::tonemap_scene(env, dfg, (240, 135));
     let cells: Vec<(Vec<u8>, String)> = Operator::all()
         .iter()
         .map(|op| (render::display(&scene, 1.0, Some(op)), operator_name(op)))

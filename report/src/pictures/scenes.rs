@@ -308,11 +308,14 @@ pub fn phong_chart(cell: usize) -> Chart {
 /// A BRDF in the local frame (wo, wi), f64, for the furnace.
 type Brdf = Box<dyn Fn(V3<f64>, V3<f64>) -> f64>;
 
+/// The BRDF of a furnace row at a perceptual roughness; `None` for an invalid one.
+type MakeBrdf = fn(f64) -> Option<Brdf>;
+
 /// Rows of the white furnace: a name and, per roughness column, the BRDF. The layered and
 /// transmissive materials join here as rows when their modules land (a transmissive row
 /// needs the whole sphere of directions: integrate its BTDF with `brdf::integrate::hemisphere`
 /// over the lower hemisphere and add it to the albedo).
-fn furnace_rows() -> Vec<(&'static str, fn(f64) -> Option<Brdf>)> {
+fn furnace_rows() -> Vec<(&'static str, MakeBrdf)> {
     vec![
         ("GGX conductor, F = 1, single scattering", |r| {
             let g = Ggx::isotropic(alpha_from_perceptual(r)).ok()?;
