@@ -184,7 +184,7 @@ pub fn fresnel_curves(dir: &Path) -> Res<String> {
 }
 
 /// Directional albedo at normal incidence and at 60 degrees against perceptual roughness, per
-/// lobe ([`directional_albedo`]).
+/// lobe ([`directional_albedo_with`]).
 pub fn albedo_vs_roughness(dir: &Path, quick: bool) -> Res<String> {
     let steps = if quick { 5 } else { 20 };
     let rs: Vec<f64> = (0..=steps)

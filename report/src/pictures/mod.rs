@@ -131,15 +131,16 @@ pub fn write_all(dir: &Path, opt: &Options) -> Res<Vec<String>> {
         ),
         (
             "phong.png",
-            "Classic Phong keeps its peak at ks and grows dim as it tightens; normalized \
-             Phong keeps its energy, so tight lobes get bright.",
+            "Classic Phong's peak stays near ks however tight the lobe, so a tight lobe reflects \
+             almost nothing; normalized Phong scales it by (n + 2) / (2 pi) and keeps its \
+             energy, so a tight lobe is small and bright.",
             Box::new(move || scenes::phong_chart(cell)),
         ),
         (
             "furnace.png",
             "White furnace (radiance 1 everywhere, shown at half exposure, no tonemapping): \
              darker than the background is energy lost, brighter is energy created. The \
-             compensated GGX and EON vanish.",
+             compensated GGX and EON all but vanish; the glTF metal loses what GGX loses.",
             Box::new(move || scenes::furnace_chart(cell)),
         ),
     ];

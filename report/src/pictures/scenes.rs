@@ -340,7 +340,7 @@ fn furnace_rows() -> Vec<(&'static str, MakeBrdf)> {
 }
 
 /// White furnace: every sphere lit by radiance 1 from everywhere, so each pixel shows the
-/// directional albedo at its n.v ([`directional_albedo`], tabulated at 16 values of n.v and
+/// directional albedo at its n.v ([`directional_albedo_with`], tabulated at 16 values of n.v and
 /// read linearly). A sphere that neither loses nor creates energy vanishes.
 pub fn furnace_chart(cell: usize) -> Chart {
     let rough = [0.2f64, 0.4, 0.6, 0.8, 1.0];
