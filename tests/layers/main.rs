@@ -5,10 +5,16 @@
 //! - `sheen`: normalization, reciprocity, energy, extremes, lanes against scalars
 //! - `sheen_albedo`: the built-in table and the published fits against the integrators
 //! - `sheen_engines`: against transcriptions of the Khronos sample viewer and three.js
+//! - `clearcoat`: clearcoat 0 is the base, reciprocity, energy, Kelemen's error, the viewer
+//! - `specular`: KHR_materials_ior / specular against the metallic-roughness material
+//! - `anisotropy`: strength 0 is isotropic, direction, bent reflection against the viewer
 
 #[path = "../common/mod.rs"]
 mod common;
 
+mod anisotropy;
+mod clearcoat;
 mod sheen;
 mod sheen_albedo;
 mod sheen_engines;
+mod specular;
