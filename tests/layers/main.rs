@@ -8,12 +8,15 @@
 //! - `clearcoat`: clearcoat 0 is the base, reciprocity, energy, Kelemen's error, the viewer
 //! - `specular`: KHR_materials_ior / specular against the metallic-roughness material
 //! - `anisotropy`: strength 0 is isotropic, direction, bent reflection against the viewer
+//! - `layered`: the layered material: zero layers, furnace, energy, per-lobe compensation,
+//!   reciprocity, sampler chi-square, extremes and lanes
 
 #[path = "../common/mod.rs"]
 mod common;
 
 mod anisotropy;
 mod clearcoat;
+mod layered;
 mod sheen;
 mod sheen_albedo;
 mod sheen_engines;
