@@ -89,6 +89,8 @@ const POLYNOMIAL: &[(&str, u128)] = &[
     ("layers::sheen::charlie", 2),
     ("layers::sheen::d_ashikhmin", 2),
     ("layers::sheen::albedo_fit_threejs", 2),
+    // sin and cos of the visible-normal and cosine samplers, as MetallicRoughness::sample.
+    ("layers::layered::Layered::sample", 128),
     // sin and cos of the anisotropy rotation.
     ("layers::anisotropy::direction", 4),
 ];
