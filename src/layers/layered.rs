@@ -198,14 +198,14 @@ impl<T: Real> Layered<T> {
 
     /// `w` in the anisotropy frame (tangent rotated by the direction).
     #[inline]
-    fn to_aniso(&self, w: V3<T>) -> V3<T> {
+    fn aniso_local(&self, w: V3<T>) -> V3<T> {
         let (c, s) = (self.aniso_cos, self.aniso_sin);
         V3::new(c * w.x + s * w.y, c * w.y - s * w.x, w.z)
     }
 
     /// `w` from the anisotropy frame back to the local frame.
     #[inline]
-    fn from_aniso(&self, w: V3<T>) -> V3<T> {
+    fn aniso_world(&self, w: V3<T>) -> V3<T> {
         let (c, s) = (self.aniso_cos, self.aniso_sin);
         V3::new(c * w.x - s * w.y, s * w.x + c * w.y, w.z)
     }
@@ -251,8 +251,8 @@ impl<T: Real> Layered<T> {
         let iso = ggx::d(h.z, alpha) * ggx::v_correlated(wo.z, wi.z, alpha);
         let ggx = self.base_ggx();
         use crate::microfacet::Microfacet;
-        let aniso =
-            ggx.d(self.to_aniso(h)) * ggx.v_correlated(self.to_aniso(wo), self.to_aniso(wi));
+        let aniso = ggx.d(self.aniso_local(h))
+            * ggx.v_correlated(self.aniso_local(wo), self.aniso_local(wi));
         let dv = T::select(self.strength.simd_eq(T::ZERO), iso, aniso).min(T::MAX);
         let base = b.base_color();
         let mut spec_ms = V3::splat(T::ZERO);
@@ -381,7 +381,11 @@ impl<T: Real> Layered<T> {
         let h = (wo + wi).normalize_or(V3::unit_z());
         let wo_dot_h = wo.dot(h);
         let spec = sampling::reflect_pdf(
-            sampling::visible_normal_pdf(&self.base_ggx(), self.to_aniso(wo), self.to_aniso(h)),
+            sampling::visible_normal_pdf(
+                &self.base_ggx(),
+                self.aniso_local(wo),
+                self.aniso_local(h),
+            ),
             wo_dot_h,
         );
         let frame = Frame::from_normal(self.coat_normal);
@@ -418,9 +422,9 @@ impl<T: Real> Layered<T> {
         let wo_c = frame.to_local(wo);
         let (m_c, _) = sampling::ggx_vndf(&self.coat_ggx(), wo_c, u_coat, u2);
         let wi_coat = frame.to_world(wo_c.mirror(m_c));
-        let wo_a = self.to_aniso(wo);
+        let wo_a = self.aniso_local(wo);
         let (m_a, _) = sampling::ggx_vndf(&self.base_ggx(), wo_a, u_spec, u2);
-        let wi_spec = self.from_aniso(wo_a.mirror(m_a));
+        let wi_spec = self.aniso_world(wo_a.mirror(m_a));
         let (wi_cos, _) = sampling::cosine_hemisphere(u_cos, u2);
         let wi = V3::select(is_coat, wi_coat, V3::select(is_spec, wi_spec, wi_cos));
         let bad = any_nonfinite3(wo) | nan_u;

@@ -26,16 +26,13 @@ fn strength_zero_is_the_isotropic_lobe_bit_for_bit() {
                 assert_eq!(p.to_bits(), q.to_bits());
             }
         }
-        assert_eq!(
-            f64::from(alpha_t(x(0.3), T::ONE).lane(0).into()),
-            1.0,
-            "strength 1 stretches to alpha 1"
-        );
+        let one: f64 = alpha_t(x(0.3), T::ONE).lane(0).into();
+        assert_eq!(one, 1.0, "strength 1 stretches to alpha 1");
     }
     check(|v| v as f32);
     check(|v| v);
     check(|v| f32x8::splat(v as f32));
-    check(|v| f64x4::splat(v));
+    check(f64x4::splat);
 }
 
 #[test]

@@ -35,7 +35,7 @@ fn clearcoat_zero_is_the_base_bit_for_bit() {
     check(|v| v as f32);
     check(|v| v);
     check(|v| f32x8::splat(v as f32));
-    check(|v| f64x4::splat(v));
+    check(f64x4::splat);
 }
 
 #[test]

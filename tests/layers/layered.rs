@@ -68,7 +68,7 @@ fn no_layer_and_zero_layers_are_the_base_bit_for_bit() {
     check(|v| v as f32);
     check(|v| v);
     check(|v| f32x8::splat(v as f32));
-    check(|v| f64x4::splat(v));
+    check(f64x4::splat);
 }
 
 fn albedo(m: &Layered<f64>, theta: f64) -> f64 {

@@ -130,7 +130,7 @@ fn extreme_grid_gives_finite_non_negative_values() {
     check(|v| v as f32);
     check(|v| v);
     check(|v| f32x8::splat(v as f32));
-    check(|v| f64x4::splat(v));
+    check(f64x4::splat);
 }
 
 /// Relative distance, 0 where both are 0.
