@@ -35,7 +35,10 @@
 //! bevy shipped that form and replaced it; the issue trackers hold the fixes). For an
 //! anisotropic base the lobe uses alpha = sqrt(alpha_t alpha_b), an approximation (the tables
 //! are isotropic). A compensated white metal reflects all the light within 0.5% up to 80
-//! degrees (`cargo test --test layers layered::white_furnace -- --nocapture`).
+//! degrees: measured within 5.2e-4 for roughness 0.2 to 1 (uncompensated it loses up to
+//! 0.69), `cargo test --test layers layered::white_furnace -- --nocapture`. With sheen and a
+//! coat on top the albedo stays at most 1 (measured max 0.976 over the test's grid); the
+//! furnace is not claimed there (the extensions' layering is not energy conserving).
 //!
 //! # Sampling
 //! One-sample lobe selection by the lobes' estimated albedos at wo: coat clearcoat

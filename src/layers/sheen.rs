@@ -20,11 +20,12 @@
 //! The Lambda fit is the paper's (its Table 1, interpolated as its section 3 says); the
 //! "terminator softening" the paper adds for light directions (Lambda^(1 + 2 (1 - c)^8)) is
 //! not part of the glTF lobe and not applied here. The fit's Lambda stays finite at the
-//! horizon (exp(a + e) = 2.9e7 at alpha = 1, 7.7e8 at alpha = 0), so V_charlie grows like
-//! 1 / n.v once n.v is below about 1e-7; the Khronos sample viewer clamps V to [0, 1], which
-//! changes it wherever (1 + Lambda_v + Lambda_l) 4 n.v n.l < 1 (both cosines below about 0.2
-//! at alpha = 1). The crate does not clamp: the value is the formula's, capped at the largest
-//! finite float.
+//! horizon (exp(a + e) = 2.9e7 at alpha = 1, 7.7e8 at alpha = 0) where the exact Smith
+//! Lambda grows like 1 / n.v, so V_charlie grows like 1 / (4 Lambda(0) n.v n.l) towards
+//! grazing views, and the lobe's albedo passes 1 there for smooth sheens ([`ALBEDO_TABLE`]).
+//! The Khronos sample viewer clamps V to [0, 1], which changes it wherever
+//! (1 + Lambda_v + Lambda_l) 4 n.v n.l < 1 (both cosines below about 0.2 at alpha = 1). The
+//! crate does not clamp: the value is the formula's, capped at the largest finite float.
 //!
 //! # Albedo and albedo scaling
 //! E(mu, alpha) = integral of f_sheen(wo, wi) cos(theta_i) dwi with sheenColor = 1 is the
