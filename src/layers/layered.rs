@@ -415,8 +415,10 @@ impl<T: Real> Layered<T> {
         let u1 = u1.clamp(T::ZERO, T::ONE - T::EPSILON * T::HALF);
         let c1 = p.x;
         let c2 = p.x + p.y;
+        // c2 can round just below 1 when the cosine lobes have probability 0: u1 above it
+        // then still picks the specular lobe, never a lobe of probability 0.
         let is_coat = u1.simd_lt(c1);
-        let is_spec = !is_coat & u1.simd_lt(c2);
+        let is_spec = !is_coat & (u1.simd_lt(c2) | p.z.simd_le(T::ZERO));
         let below1 = |x: T| x.clamp(T::ZERO, T::ONE - T::EPSILON * T::HALF);
         let u_coat = below1(u1 / p.x);
         let u_spec = below1((u1 - c1) / p.y);

@@ -224,6 +224,30 @@ fn sampler_matches_its_pdf() {
     let _ = common::SAMPLES;
 }
 
+/// The chi-square has teeth: the samples of a coated material judged against the pdf of the
+/// same material without its coat fail by a wide margin.
+#[test]
+fn a_sampler_paired_with_a_wrong_pdf_is_rejected() {
+    let base = Layered::new(V3::new(0.8, 0.6, 0.3), 0.0, 0.6).unwrap();
+    let coated = base.with_clearcoat(1.0, 0.5).unwrap();
+    let wo = wo_at(60.0);
+    let folded = |w: V3<f64>| base.pdf(wo, w) + base.pdf(wo, flip(w));
+    let (stat, dof) = chi_square(
+        |u1, u2| {
+            let (wi, _) = coated.sample(wo, u1, u2);
+            let w = if wi.z < 0.0 { flip(wi) } else { wi };
+            (w.into(), folded(w))
+        },
+        |w| folded(w.into()),
+    );
+    println!("wrong pdf: chi^2 = {stat:.1}, dof = {dof}");
+    assert!(
+        stat > 4.0 * common::critical(dof),
+        "{stat} vs {}",
+        common::critical(dof)
+    );
+}
+
 #[test]
 fn extremes_are_finite_and_lanes_follow_scalars() {
     let mut worst: f64 = 0.0;
