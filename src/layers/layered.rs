@@ -66,7 +66,7 @@ use crate::material::{MetallicRoughness, SCHLICK_WEIGHT_AVERAGE, fresnel_and_kd,
 use crate::microfacet::alpha_from_perceptual;
 use crate::real::Real;
 use crate::sampling;
-use crate::shading::Cosines;
+use crate::shading::{Cosines, ShadingPoint};
 use crate::vec3::{V3, any_nonfinite3};
 
 /// The layered glTF material (module docs). Built from a base with [`Layered::new`] or
@@ -439,5 +439,30 @@ impl<T: Real> Layered<T> {
             nan_where(bad, wi.z),
         );
         (wi, self.pdf(wo, wi))
+    }
+
+    /// [`eval`](Self::eval) from world space: f(v, l) at the shading point `sp` and the
+    /// world-space unit light direction `l`. Build `sp` with
+    /// [`ShadingPoint::from_frame`] from the mesh's tangent frame
+    /// ([`Frame::from_axes`]`(t, b, n)`), so that the anisotropy direction and rotation are
+    /// measured from the glTF tangent; [`ShadingPoint::new`] picks an arbitrary tangent, fine
+    /// without anisotropy. Equal to `self.eval(sp.wo(), sp.local(l))`.
+    #[must_use]
+    pub fn eval_world(&self, sp: &ShadingPoint<T>, l: V3<T>) -> V3<T> {
+        self.eval(sp.wo(), sp.local(l))
+    }
+
+    /// [`pdf`](Self::pdf) from world space: the solid-angle pdf of drawing the world-space
+    /// direction `l` at `sp` with [`sample_world`](Self::sample_world).
+    #[must_use]
+    pub fn pdf_world(&self, sp: &ShadingPoint<T>, l: V3<T>) -> T {
+        self.pdf(sp.wo(), sp.local(l))
+    }
+
+    /// [`sample`](Self::sample) in world space: (l, pdf) with l = `sp.world(wi)`.
+    #[must_use]
+    pub fn sample_world(&self, sp: &ShadingPoint<T>, u1: T, u2: T) -> (V3<T>, T) {
+        let (wi, pdf) = self.sample(sp.wo(), u1, u2);
+        (sp.world(wi), pdf)
     }
 }

@@ -261,6 +261,24 @@ fn layered_rows<T: Real>(t: &mut Vec<Kernel<T>>) {
             vec![v("wo", WO), c("u1", 0.3), c("u2", 0.6)],
             move |x| o4(m.sample(v3(x, 0), x[3], x[4])),
         ));
+        // World space: a shading point of normal n and view v.
+        let n_v = || [v("n", [0.0, 0.6, 0.8]), v("v", WO)].concat();
+        let sp = |x: &[T]| brdf::ShadingPoint::new(v3(x, 0), v3(x, 3));
+        t.push(k(
+            &format!("Layered::eval_world({label})"),
+            vec![n_v(), v("l", WI)],
+            move |x| o3(m.eval_world(&sp(x), v3(x, 6))),
+        ));
+        t.push(k(
+            &format!("Layered::pdf_world({label})"),
+            vec![n_v(), v("l", WI)],
+            move |x| vec![m.pdf_world(&sp(x), v3(x, 6))],
+        ));
+        t.push(k(
+            &format!("Layered::sample_world({label})"),
+            vec![n_v(), c("u1", 0.3), c("u2", 0.6)],
+            move |x| o4(m.sample_world(&sp(x), x[6], x[7])),
+        ));
     }
 }
 

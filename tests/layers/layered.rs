@@ -310,3 +310,26 @@ fn extremes_are_finite_and_lanes_follow_scalars() {
     // The lanes' exp and pow (sheen) are a few ULP from libm's.
     assert!(worst < 1e-5, "{worst}");
 }
+
+#[test]
+fn world_space_equals_local_space_in_the_tangent_frame() {
+    use brdf::ShadingPoint;
+    use brdf::frame::Frame;
+    let m = Layered::new(V3::new(0.7, 0.5, 0.2), 0.3, 0.4)
+        .and_then(|m| m.with_anisotropy(0.8, 0.6))
+        .and_then(|m| m.with_clearcoat(0.5, 0.2))
+        .unwrap();
+    // A tangent frame tilted away from the world axes.
+    let n = V3::new(0.0, 0.6, 0.8);
+    let t = V3::new(0.8, -0.36, 0.48);
+    let b = n.cross(t);
+    let frame = Frame::from_axes(t, b, n);
+    let v = V3::new(0.3, 0.5, 0.812_403_840_463_596);
+    let sp = ShadingPoint::from_frame(frame, v);
+    let l = V3::new(-0.5, 0.4, 0.768_114_574_786_860_8);
+    assert_eq!(m.eval_world(&sp, l), m.eval(sp.wo(), sp.local(l)));
+    assert_eq!(m.pdf_world(&sp, l), m.pdf(sp.wo(), sp.local(l)));
+    let (lw, p) = m.sample_world(&sp, 0.4, 0.7);
+    let (wi, q) = m.sample(sp.wo(), 0.4, 0.7);
+    assert_eq!((lw, p), (sp.world(wi), q));
+}

@@ -964,4 +964,16 @@ const EXCLUDED: &[(&str, &str)] = &[
         "layers::specular::Specular::dielectric_f0",
         "validated-parameter form of layers::specular::dielectric_f0, which is in the table",
     ),
+    (
+        "layers::layered::Layered::eval_world",
+        "world-space wrapper: Layered::eval(sp.wo(), sp.local(l)), which is in the table",
+    ),
+    (
+        "layers::layered::Layered::pdf_world",
+        "world-space wrapper: Layered::pdf(sp.wo(), sp.local(l)), which is in the table",
+    ),
+    (
+        "layers::layered::Layered::sample_world",
+        "world-space wrapper: sp.world of Layered::sample(sp.wo(), u1, u2), which is in the table",
+    ),
 ];
