@@ -46,10 +46,13 @@
 //! view x, y, z, then light x, y, z, unit vectors with z > 0): it times `ggx_d`, `ggx_d_plain`
 //! (GGX D in working precision, no error-free transformations: a yardstick, not a crate kernel),
 //! `ggx_d_fast`, `beckmann_d`, `beckmann_d_fast`,
-//! `rough_conductor` (from the directions: half vector, cosines, then the term),
-//! `rough_conductor_fast` (the cosines of the half vector by `cook_torrance::half_cosines`,
-//! then the fast term), `rough_conductor_fast_borrowed` (the same kernel as a closure that
-//! borrows its parameters instead of moving them: see the `batch` module docs),
+//! `rough_conductor` and `rough_conductor_fast` (`cook_torrance::ggx_conductor_local` and
+//! `ggx_conductor_local_fast` from the directions, times n.l), `rough_conductor_cosines` (from
+//! the directions: half vector, cosines, then `cook_torrance::ggx` with `fresnel::conductor`),
+//! `rough_conductor_cosines_fast` (the cosines of the half vector by
+//! `cook_torrance::half_cosines`, then the fast term), `rough_conductor_fast_borrowed` (that
+//! kernel as a closure that borrows its parameters instead of moving them: see the `batch`
+//! module docs),
 //! `material_gltf` and `material_gltf_fast` (`material::gltf` and `gltf_fast` from the
 //! directions through `half_cosines`, base colour (0.9, 0.6, 0.3), metallic 0.5, roughness 0.5,
 //! three output slices), `material_textbook_scalar` and `material_textbook_inlined` (the same

@@ -19,19 +19,26 @@ repository root. It
    - the rough conductor, one channel, f cos(theta_l) as a BSDF evaluation returns it:
      Mitsuba D(h) G(v, l, h) F_conductor(v.h, eta + i k) / (4 cos(theta_v)) with its
      distribution's `eval` and `G` and `mi.fresnel_conductor` (the arithmetic of its
-     `roughconductor` plugin's `eval`), brdf D V F n.l with `cook_torrance::ggx` and
-     `fresnel::conductor`, both forming the half vector from the two directions;
+     `roughconductor` plugin's `eval`), brdf `cook_torrance::ggx_conductor_local` (D V F from
+     the two directions, D from the half vector's components) times n.l;
    - beside each, brdf's working-precision variant against the same Mitsuba time:
-     `ggx::d_fast`, `beckmann::d_fast`, and the rough conductor with both `ggx::d_fast` and
-     `fresnel::conductor_fast`, its half-vector cosines from `cook_torrance::half_cosines`
-     (their error against the exact forms is in their docs);
+     `ggx::d_fast`, `beckmann::d_fast`, `cook_torrance::ggx_conductor_local_fast` (their
+     error against the exact forms is in their docs), and for the rough conductor the
+     dot-product route too (`half_vector`, then `cook_torrance::ggx` with `fresnel::conductor`,
+     or `half_cosines` with `ggx::d_fast` and `fresnel::conductor_fast`), whose D reads n.h
+     alone;
    - the copy floor: brdf's `copy_from_slice` of one input slice into the output slice;
    - a yardstick row: GGX D in plain working precision (defined in benches/throughput.rs,
      not a brdf kernel), to show what brdf's correctly rounded `ggx::d` costs.
 
 The whole process (Python, drjit's worker and the brdf binary) is pinned to one core with
-`taskset -c 0` and drjit runs one thread. Absolute times move from run to run (and on a shared
-machine by much more); the ratio column, from one interleaved run, is the figure to quote.
+`taskset -c 0` and drjit runs one thread. Each side is timed by its CPU clock (`--clock cpu`,
+the default: Python's `process_time`, which counts drjit's worker thread and the tracing,
+and the brdf thread's own), which leaves out the time spent waiting for the core on a shared
+machine; `--clock wall` times elapsed time, as `--parallel` always does. Absolute times move
+from run to run (and on a shared machine by much more); the ratio column, from one
+interleaved run, is the figure to quote. `--sizes` prints instead ns per element for batches
+of 10^3 up to `--n` elements on both sides.
 
 Differences the ratio carries: Mitsuba's `eval(m)` reads the three components of m (12 bytes
 per element), brdf's D the cosine only (4 bytes); Mitsuba's G is the separable Smith
@@ -300,7 +307,10 @@ def main():
             ratio = ours[ok] / theirs[ok]
             print(f"# values {name}: brdf / Mitsuba median {np.median(ratio):.6f}, "
                   f"range [{ratio.min():.4g}, {ratio.max():.4g}] over {ok.sum()} elements")
-        accuracy = measure_accuracy(soa, mi_values, brdf_values, args.check, args.seed)
+        # The errors do not depend on the thread count: --parallel skips them (at 10^7
+        # elements they take minutes).
+        accuracy = ({} if args.parallel else
+                    measure_accuracy(soa, mi_values, brdf_values, args.check, args.seed))
         material_err = {}
         path = os.path.join(tmp, "material_gltf.f32")
         if os.path.exists(path):
@@ -334,11 +344,13 @@ def main():
     print("|---|---|---|---|---|")
 
     def cell(ms, acc):
+        if acc is None:
+            return f"{ms:.2f} ms"
         return f"{ms:.2f} ms at {acc[0]:.3g} ULP (median {acc[1]:.2g})"
 
     for name in KERNELS:
         m, b = statistics.median(mi_ms[name]), med[name]
-        mi_acc = accuracy[("mitsuba", name)]
+        mi_acc = accuracy.get(("mitsuba", name))
         rows = [(LABELS[name], name)]
         if med.get(name + "_fast") is not None:
             rows.append((LABELS[name + "_fast"], name + "_fast"))
@@ -349,7 +361,7 @@ def main():
             rows += [(LABELS[r], r) for r in COSINES if r in med and ("brdf", r) in accuracy]
         for label, row in rows:
             b = med[row]
-            print(f"| {label} | {cell(m, mi_acc)} | {cell(b, accuracy[('brdf', row)])} "
+            print(f"| {label} | {cell(m, mi_acc)} | {cell(b, accuracy.get(('brdf', row)))} "
                   f"| {b / m:.2f} | {b / copy:.2f} |")
     print(f"| copy (floor) | | {copy:.2f} ms | | 1.00 |")
 
