@@ -532,9 +532,10 @@ impl<T: Real> Microfacet<T> for Beckmann<T> {
 ///   record one): within 0.7 ULP (f32, f32x8; 0.53 found), the polynomial's 0.04 included.
 ///
 /// Measured by the MPFR oracle (module docs). Run time on `f32x8` (native build, one core of an
-/// AMD EPYC (Zen 4), 10^6 uniform cosines through [`crate::batch::run_f32`]): 1.55 ms, 2.2x
-/// [`d_fast`] and 2.54x Mitsuba 3's `eval` on the same batch (`bench/mitsuba/compare.py --n
-/// 1000000`, its README's table; 7.9x before the f64 evaluation).
+/// AMD EPYC (Zen 4), 10^6 uniform cosines through [`crate::batch::run_f32`], CPU time):
+/// 1.41 ms, 2.0x [`d_fast`] and 1.98x Mitsuba 3's `eval` on the same batch in one run (2.3x
+/// to 2.5x in quieter ones; `bench/mitsuba/compare.py --n 1000000`, its README's table; 7.9x
+/// before the f64 evaluation), of which the subnormal-safe rounding is about a fifth.
 ///
 /// [`alpha_from_perceptual`]: crate::microfacet::alpha_from_perceptual
 #[inline]
@@ -612,7 +613,9 @@ impl crate::real::sealed::Widened<2> for DIso {
 /// t = E / (2 ln 2) (a polynomial on f32 lanes, libm's exp2 elsewhere), cosines below 2^-40
 /// (f32) / 2^-400 (f64) raised to that floor (D is 0 there either way), and D = 0 wherever it
 /// is below the smallest normal number (where E >= 150 in f32 / 1380 in f64, or y^2 would be
-/// subnormal): an absolute error below 1.2e-38 (f32) / 2.3e-308 (f64).
+/// subnormal): an absolute error below 1.2e-38 (f32) / 2.3e-308 (f64). A y up to 2^-15
+/// (relative) below the root of the smallest normal number is raised to it, so that a D whose
+/// exact value is normal is not flushed through y's own error.
 ///
 /// Domain, edges and bad input as [`d`]: n_dot_h in [-1, 1] (above 1 clamped to 1; <= 0
 /// gives 0), alpha in [0, +inf) finite, clamped to [ALPHA_MIN, ALPHA_MAX] (the RMS slope, not
@@ -637,8 +640,9 @@ impl crate::real::sealed::Widened<2> for DIso {
 /// within 2 ULP of libm's: within 6 ULP of D.
 ///
 /// Run time (native build, one core of an AMD EPYC (Zen 4), 10^6 uniform cosines through
-/// [`crate::batch::run_f32`]): 0.45x [`d`], 1.13x Mitsuba 3's `eval` on the same batch
-/// (`bench/mitsuba/compare.py --n 1000000`, its README's table).
+/// [`crate::batch::run_f32`], CPU time): 0.49x [`d`], 0.97x Mitsuba 3's `eval` on the same
+/// batch, whose own error there is 185 ULP against this tier's 332 (`bench/mitsuba/compare.py
+/// --n 1000000`, its README's table).
 #[inline]
 #[must_use]
 pub fn d_fast<T: Real>(n_dot_h: T, alpha: T) -> T {

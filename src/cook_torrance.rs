@@ -346,22 +346,25 @@ pub fn ggx_conductor_local<T: Real>(wo: V3<T>, wi: V3<T>, alpha: Alpha<T>, eta: 
     let a = crate::microfacet::clamp_alpha(alpha.0);
     let x = [wo.x, wo.y, wo.z, wi.x, wi.y, wi.z, a, eta, k];
     let value = T::via_f64(x, ConductorLocal, crate::real::sealed::Token::NEW);
-    let s = wo + wi;
-    local_guards(s.dot(s), a, eta, k, value)
+    // 0 x is 0 for every finite x (no subnormal, no overflow), NaN for NaN and infinities.
+    let probe = [wo.x, wo.y, wo.z, wi.x, wi.y, wi.z]
+        .into_iter()
+        .fold(T::ZERO, |acc, x| x.mul_add(T::ZERO, acc));
+    local_guards(probe, a, eta, k, value)
 }
 
 /// NaN where [`ggx_conductor_local`]'s and [`ggx_conductor_local_fast`]'s inputs are out of
 /// their domain (the f32 rounding does not keep a NaN, and an invalid eta or k gives an
-/// unspecified F). A NaN or infinite component of wo or wi makes |wo + wi|^2 NaN or infinite
-/// (for unit vectors nothing else does), and 0 |wo + wi|^2 is then NaN, else 0: one
-/// multiplication and one addition per lane instead of a comparison per component (the eta,
-/// k and alpha checks are the same for every lane of a loop with fixed parameters, where
-/// they are computed once).
+/// unspecified F). `probe` is NaN exactly where a component of wo or wi is NaN or infinite
+/// (the callers form it from sums of 0 times the components, or from 0 |wo + wi|^2), 0
+/// elsewhere; it is compared, not added, so that a subnormal result meets no arithmetic. The
+/// eta, k and alpha checks are the same for every lane of a loop with fixed parameters, where
+/// they are computed once.
 #[cfg(feature = "ggx")]
 #[inline]
-fn local_guards<T: Real>(ss: T, a: T, eta: T, k: T, value: T) -> T {
+fn local_guards<T: Real>(probe: T, a: T, eta: T, k: T, value: T) -> T {
     let ok = fresnel::valid_eta(eta) & k.simd_ge(T::ZERO) & k.simd_le(T::MAX) & !a.is_nan();
-    crate::domain::nan_unless(ok, value + ss * T::ZERO)
+    crate::domain::nan_unless(ok, nan_where(probe.is_nan(), value))
 }
 
 /// The value of [`ggx_conductor_local`] for the clamped alpha (invalid eta, k or NaN give an
@@ -445,7 +448,9 @@ fn local_dv<T: Real>(sz: T, sxy: T, ss: T, n_dot_v: T, n_dot_l: T, a: T, cap: T)
 /// Against the exact value, and beside Mitsuba 3's own error, on 10^6 hemisphere pairs:
 /// `bench/mitsuba/README.md`. Where |wo + wi| < 2^-30 (the two
 /// directions nearly opposite, both within 2^-30 of the horizon; 2^-250 in f64) |s|^4 and
-/// the denominator leave the normal range: there the result is finite but not accurate.
+/// the denominator leave the normal range: there the result is finite but not accurate, and
+/// (unlike the exact tier, which meets no subnormal number for normal inputs) |s|^2 may be
+/// subnormal.
 ///
 /// Sources: as [`ggx_conductor_local`].
 #[cfg(feature = "ggx")]
@@ -461,7 +466,8 @@ pub fn ggx_conductor_local_fast<T: Real>(wo: V3<T>, wi: V3<T>, alpha: Alpha<T>, 
     let above = wo.z.simd_gt(T::ZERO) & wi.z.simd_gt(T::ZERO);
     // F <= 1: the product stays finite.
     let value = T::select(above, dv * f, T::ZERO);
-    local_guards(ss, a, eta, k, value)
+    // For unit vectors only a NaN or infinite component makes |s|^2 NaN or infinite.
+    local_guards(ss * T::ZERO, a, eta, k, value)
 }
 
 /// Isotropic GGX with Schlick's Fresnel of an RGB F0, the glTF 2.0 / Filament / Unreal
