@@ -1109,8 +1109,7 @@ pub(crate) mod sealed {
                 let big = super::narrow(big_lo, big_hi).to_bits();
                 let small = super::narrow(small_lo, small_hi).to_bits();
                 // `crate::widen::round_tiny_f32`'s join, lane by lane.
-                // (the constant is taken from `big`, off the longer path through `small`).
-                Self::from_bits((big - wide::u32x8::splat(0x0100_0000)) + small)
+                Self::from_bits((big + small) - wide::u32x8::splat(0x0100_0000))
             } else {
                 super::narrow(lo, hi)
             }
