@@ -1536,6 +1536,24 @@ pub static KERNELS: &[Kernel] = &[
         o3(cook_torrance::ggx_conductor_rgb_fast(cosines(n_dot_v, n_dot_l, n_dot_h, v_dot_h), Alpha(alpha), ComplexIor { eta: v3(eta_r, eta_g, eta_b), k: v3(k_r, k_g, k_b) }))
     ),
     kernel!(
+        "cook_torrance::ggx_conductor_local",
+        "Rough conductor, GGX, one channel, from the directions (D from h's components), Walter \
+         et al. 2007; Born and Wolf 14.2",
+        [wo_x: Domain::DIR, wo_y: Domain::DIR, wo_z: Domain::DIR,
+         wi_x: Domain::DIR, wi_y: Domain::DIR, wi_z: Domain::DIR, alpha: ALPHA, eta: ETA, k: KAPPA]
+            -> [f: Domain::NONNEG],
+        [cook_torrance::ggx_conductor_local(v3(wo_x, wo_y, wo_z), v3(wi_x, wi_y, wi_z), Alpha(alpha), eta, k)]
+    ),
+    kernel!(
+        "cook_torrance::ggx_conductor_local_fast",
+        "Rough conductor, GGX, one channel, from the directions, working precision, Walter et \
+         al. 2007; Born and Wolf 14.2",
+        [wo_x: Domain::DIR, wo_y: Domain::DIR, wo_z: Domain::DIR,
+         wi_x: Domain::DIR, wi_y: Domain::DIR, wi_z: Domain::DIR, alpha: ALPHA, eta: ETA, k: KAPPA]
+            -> [f: Domain::NONNEG],
+        [cook_torrance::ggx_conductor_local_fast(v3(wo_x, wo_y, wo_z), v3(wi_x, wi_y, wi_z), Alpha(alpha), eta, k)]
+    ),
+    kernel!(
         "cook_torrance::ggx_schlick_rgb",
         "GGX with Schlick's Fresnel of an RGB F0 (glTF, Filament, UE4), Schlick 1994; Walter et \
          al. 2007",

@@ -1365,6 +1365,44 @@ fn cook_torrance_rows<T: Real>(t: &mut Vec<Kernel<T>>) {
                 )]
             },
         ));
+        t.push(k(
+            "cook_torrance::ggx_conductor_local",
+            vec![
+                v("wo", WO),
+                v("wi", WI),
+                p("alpha", 0.3, &ALPHA_BAD),
+                p("eta", 0.2, &ETA_BAD),
+                p("k", 3.0, &NONNEG_BAD),
+            ],
+            |x| {
+                vec![ct::ggx_conductor_local(
+                    v3(x, 0),
+                    v3(x, 3),
+                    Alpha(x[6]),
+                    x[7],
+                    x[8],
+                )]
+            },
+        ));
+        t.push(k(
+            "cook_torrance::ggx_conductor_local_fast",
+            vec![
+                v("wo", WO),
+                v("wi", WI),
+                p("alpha", 0.3, &ALPHA_BAD),
+                p("eta", 0.2, &ETA_BAD),
+                p("k", 3.0, &NONNEG_BAD),
+            ],
+            |x| {
+                vec![ct::ggx_conductor_local_fast(
+                    v3(x, 0),
+                    v3(x, 3),
+                    Alpha(x[6]),
+                    x[7],
+                    x[8],
+                )]
+            },
+        ));
         t.push(
             k(
                 "cook_torrance::ggx_conductor_rgb_fast",

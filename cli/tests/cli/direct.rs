@@ -275,6 +275,22 @@ pub fn direct<T: Scalar>(path: &str, a: &[T]) -> Option<Vec<T>> {
                 k: v(a, 8),
             },
         )),
+        "cook_torrance::ggx_conductor_local" => vec![cook_torrance::ggx_conductor_local(
+            v(a, 0),
+            v(a, 3),
+            Alpha(a[6]),
+            a[7],
+            a[8],
+        )],
+        "cook_torrance::ggx_conductor_local_fast" => {
+            vec![cook_torrance::ggx_conductor_local_fast(
+                v(a, 0),
+                v(a, 3),
+                Alpha(a[6]),
+                a[7],
+                a[8],
+            )]
+        }
         "cook_torrance::ggx_schlick_rgb" => three(cook_torrance::ggx_schlick_rgb(
             c(a, 0),
             Alpha(a[4]),
