@@ -522,17 +522,20 @@ impl<T: Real> Microfacet<T> for Beckmann<T> {
 ///   error below 1e-13 in E), e^-E = 2^-k e^-r with k = round(E / ln 2) (formed from
 ///   (1 - c^2) log2(e) and q beside E), |r| <= ln(2) / 2,
 ///   e^-r by a degree-6 polynomial within 2.6e-9, and D = e^-E q^2 alpha^2 / pi with one
-///   division in all. D is 0 where E > 200 (there D < 1e-74 for every alpha in
-///   [ALPHA_MIN, ALPHA_MAX], so it rounds to 0), and a result below f32's smallest normal
+///   division in all. Cosines where E would exceed 200 are raised to the one where E = 200
+///   (c^2 >= 1 / (1 + 200 alpha^2), a bound that depends on alpha alone): D there is below
+///   2e-75 for every alpha in [ALPHA_MIN, ALPHA_MAX] and rounds to 0, as the true D does,
+///   without a select on the lane's path, and a result below f32's smallest normal
 ///   number is rounded from normal ones (`max(y, 2^-126)` and `min(y, 2^-126) + 2^-126`,
 ///   joined in their bits), so that for normal inputs no instruction meets a subnormal number
 ///   (on x86 each would cost a microcode assist; `tests/lanes/exp.rs` reads the flags that
 ///   record one): within 0.7 ULP (f32, f32x8; 0.53 found), the polynomial's 0.04 included.
 ///
 /// Measured by the MPFR oracle (module docs). Run time on `f32x8` (native build, one core of an
-/// AMD EPYC (Zen 4), 10^6 uniform cosines through [`crate::batch::run_f32`]): 1.55 ms, 2.2x
-/// [`d_fast`] and 2.54x Mitsuba 3's `eval` on the same batch (`bench/mitsuba/compare.py --n
-/// 1000000`, its README's table; 7.9x before the f64 evaluation).
+/// AMD EPYC (Zen 4), 10^6 uniform cosines through [`crate::batch::run_f32`], CPU time):
+/// 1.41 ms, 2.0x [`d_fast`] and 1.98x Mitsuba 3's `eval` on the same batch in one run (2.3x
+/// to 2.5x in quieter ones; `bench/mitsuba/compare.py --n 1000000`, its README's table; 7.9x
+/// before the f64 evaluation), of which the subnormal-safe rounding is about a fifth.
 ///
 /// [`alpha_from_perceptual`]: crate::microfacet::alpha_from_perceptual
 #[inline]
@@ -570,31 +573,29 @@ impl crate::real::sealed::Widened<2> for DIso {
 
     #[inline]
     fn wide<W: Real<Scalar = f64>>(self, [c, a]: [W; 2]) -> W {
-        // c^2 and alpha^2 are exact (48 significant bits); 1 - c^2, 1 / alpha^2 and
-        // q = (1 / alpha^2) / c^2 (the division takes c^2 directly, the shortest path to it)
-        // round once each, so E = (1 - c^2) q is within 4 units of 2^-53 of itself, an
-        // absolute error below 1e-13 for E <= 200 (against the polynomial's 2.6e-9 relative).
-        // c^2 >= 2e-90 for every positive f32 c, so no intermediate is subnormal; at c = 0, q
-        // and E are +inf, and the lane is 0 through `big`.
-        let c2 = c * c;
+        // c^2 and alpha^2 are exact (48 significant bits). Cosines whose E would exceed 200
+        // (c^2 (1 + 200 alpha^2) < 1) are raised to the cosine where E = 200: D there is below
+        // 2e-75 for every alpha in [ALPHA_MIN, ALPHA_MAX] (E_ZERO_F32), so it rounds to 0 in
+        // f32 as the true D does, E stays <= 200 (up to a few units of 2^-53) without a
+        // select, and c = 0 needs no case of its own. The floor depends on alpha alone, so in
+        // a loop over cosines with one alpha it is computed once.
         let a2 = a * a;
+        let c2 = (c * c).max(a2.mul_add(W::splat(E_ZERO_F32), W::ONE).recip());
+        // 1 - c^2, 1 / alpha^2 and q = (1 / alpha^2) / c^2 (the division takes c^2 directly,
+        // the shortest path to it) round once each, so E = (1 - c^2) q is within 4 units of
+        // 2^-53 of itself, an absolute error below 1e-13 for E <= 200 (against the
+        // polynomial's 2.6e-9 relative). No intermediate is subnormal.
         let s2 = W::ONE - c2;
         let q = a2.recip() / c2;
         let e = s2 * q;
-        // E > 200 exactly where c^2 (1 + 200 alpha^2) < 1 (up to roundings, which move the
-        // edge by a few units of 2^-53 of E, where D is 0 in f32 on either side): tested on
-        // c^2 while q is divided, so that the clamp costs the chain one select.
-        let big = (c2 * (a2.mul_add(W::splat(E_ZERO_F32), W::ONE))).simd_lt(W::ONE);
-        // k = round(E log2(e)) from (1 - c^2) log2(e) and q, beside E rather than after it,
-        // capped at round(200 log2(e)) = 289 where E is capped at 200.
+        // k = round(E log2(e)) from (1 - c^2) log2(e) and q, beside E rather than after it.
         let s2_log2e = s2 * W::splat(core::f64::consts::LOG2_E);
-        let k = crate::widen::round_product(s2_log2e, q).min(W::splat(289.0));
-        let (p, two_k) = crate::widen::exp_neg_split_k(W::select(big, W::splat(E_ZERO_F32), e), k);
+        let k = crate::widen::round_product(s2_log2e, q);
+        let (p, two_k) = crate::widen::exp_neg_split_k(e, k);
         // D = e^-E / (pi c^4 alpha^2) = p 2^-k q^2 alpha^2 / pi, the factors other than p
-        // multiplied (and zeroed where E > 200) while p is evaluated; for E <= 200 and
-        // q <= 5e97 every factor and product lies between 1e-88 and 1e204.
-        let w = two_k * ((q * q) * (a2 * W::splat(core::f64::consts::FRAC_1_PI)));
-        p * W::select(big, W::ZERO, w)
+        // multiplied while p is evaluated; for E <= 200 and q <= 1e8 / c^2 every factor and
+        // product lies between 1e-88 and 1e204.
+        p * (two_k * ((q * q) * (a2 * W::splat(core::f64::consts::FRAC_1_PI))))
     }
 }
 
@@ -612,7 +613,9 @@ impl crate::real::sealed::Widened<2> for DIso {
 /// t = E / (2 ln 2) (a polynomial on f32 lanes, libm's exp2 elsewhere), cosines below 2^-40
 /// (f32) / 2^-400 (f64) raised to that floor (D is 0 there either way), and D = 0 wherever it
 /// is below the smallest normal number (where E >= 150 in f32 / 1380 in f64, or y^2 would be
-/// subnormal): an absolute error below 1.2e-38 (f32) / 2.3e-308 (f64).
+/// subnormal): an absolute error below 1.2e-38 (f32) / 2.3e-308 (f64). A y up to 2^-15
+/// (relative) below the root of the smallest normal number is raised to it, so that a D whose
+/// exact value is normal is not flushed through y's own error.
 ///
 /// Domain, edges and bad input as [`d`]: n_dot_h in [-1, 1] (above 1 clamped to 1; <= 0
 /// gives 0), alpha in [0, +inf) finite, clamped to [ALPHA_MIN, ALPHA_MAX] (the RMS slope, not
@@ -637,8 +640,9 @@ impl crate::real::sealed::Widened<2> for DIso {
 /// within 2 ULP of libm's: within 6 ULP of D.
 ///
 /// Run time (native build, one core of an AMD EPYC (Zen 4), 10^6 uniform cosines through
-/// [`crate::batch::run_f32`]): 0.45x [`d`], 1.13x Mitsuba 3's `eval` on the same batch
-/// (`bench/mitsuba/compare.py --n 1000000`, its README's table).
+/// [`crate::batch::run_f32`], CPU time): 0.49x [`d`], 0.97x Mitsuba 3's `eval` on the same
+/// batch, whose own error there is 185 ULP against this tier's 332 (`bench/mitsuba/compare.py
+/// --n 1000000`, its README's table).
 #[inline]
 #[must_use]
 pub fn d_fast<T: Real>(n_dot_h: T, alpha: T) -> T {
@@ -683,9 +687,13 @@ pub fn d_fast<T: Real>(n_dot_h: T, alpha: T) -> T {
         .exp2_neg(crate::real::sealed::Token::NEW)
         * (r * (a * T::splat(FRAC_1_SQRT_PI)));
     // y^2 is subnormal below y = 2^-63 (f32) / 2^-511 (f64): those lanes are 0 first, so no
-    // lane ever holds a subnormal number (each costs a microcode assist on x86).
-    let zero = t.simd_ge(T::splat(t_cap)) | y.simd_lt(T::splat(y_min));
-    let y = T::select(zero, T::ZERO, y);
+    // lane ever holds a subnormal number (each costs a microcode assist on x86). The cut lies
+    // 2^-15 (relative) below that y, and y between the cut and 2^-63 is raised to 2^-63: a D
+    // whose exact value is a normal number near f32's smallest comes out as that number
+    // rather than 0 (y carries an error of about 1.3e-5 relative there, E being near 87),
+    // an error within the tier's own near that E.
+    let zero = t.simd_ge(T::splat(t_cap)) | y.simd_lt(T::splat(y_min * (1.0 - 1.0 / 32768.0)));
+    let y = T::select(zero, T::ZERO, y.max(T::splat(y_min)));
     y * y
 }
 

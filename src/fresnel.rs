@@ -61,7 +61,7 @@ use crate::vec3::V3;
 
 /// eta in (0, MAX]: false for NaN, 0, negatives and +inf.
 #[inline]
-fn valid_eta<T: Real>(eta: T) -> T::Mask {
+pub(crate) fn valid_eta<T: Real>(eta: T) -> T::Mask {
     eta.simd_gt(T::ZERO) & eta.simd_le(T::MAX)
 }
 
@@ -444,7 +444,7 @@ pub fn conductor<T: Real>(cos_theta_i: T, eta: T, k: T) -> T {
 /// NaN cosine gives an unspecified value, which the caller replaces by NaN): double words in
 /// f64 and f64x4, one f64 evaluation rounded once in f32 and f32x8.
 #[derive(Clone, Copy)]
-struct Conductor;
+pub(crate) struct Conductor;
 
 impl crate::real::sealed::Widened<3> for Conductor {
     /// F of N near 1 falls below f32's smallest normal number (F = k^2 / 4 at c = 1, eta = 1).

@@ -364,9 +364,9 @@ impl<T: Real> Microfacet<T> for Ggx<T> {
 /// operations), where c^2 and alpha^2 are exact and t = (1 - c^2) + c^2 alpha^2, t^2 and the
 /// one division carry six roundings of 2^-53 in all, below 2^-26 of an f32 ULP (D is never below
 /// 3e-9, so no result is subnormal). Run time on `f32x8` (native build, one core of an AMD
-/// EPYC (Zen 4), 10^6 uniform cosines through [`crate::batch::run_f32`]): 0.37 ms, 2.1x
-/// [`d_fast`] and 0.70x Mitsuba 3's `eval` on the same batch (`bench/mitsuba/compare.py --n
-/// 1000000`, its README's table).
+/// EPYC (Zen 4), 10^6 uniform cosines through [`crate::batch::run_f32`], CPU time): 0.38 ms,
+/// 2.1x [`d_fast`] and 0.56x Mitsuba 3's `eval` on the same batch (`bench/mitsuba/compare.py
+/// --n 1000000`, its README's table).
 ///
 /// `alpha` is the GGX width, not perceptual roughness: alpha = r^2 for a material's roughness r
 /// ([`alpha_from_perceptual`]). Filament's `D_GGX(roughness, NoH)` takes this same alpha as

@@ -75,6 +75,7 @@
 //! | `tonemap` | tonemapping operators, exposure | `tonemap` |
 //! | `color` | sRGB / Rec.709 transfer, luminance, colour matrices | `tonemap` |
 //! | `integrate` | hemisphere integrators: albedo, NDF area, weak furnace, reciprocity | `integrate` |
+//! | `layers` | the glTF extension lobes (sheen, clearcoat, specular and IOR, anisotropy) and the layered material composing them | `sheen`, `clearcoat`, `specular`, `anisotropy`, `layered` |
 //! | `ibl` | split-sum DFG table and fits, prefilter samples, irradiance (quadrature, SH9), multiple-scattering energy compensation | `ibl` |
 //!
 //! ## Bad input: one rule for every function
@@ -165,6 +166,14 @@ pub mod ibl;
 pub mod integrate;
 #[cfg(feature = "iridescence")]
 pub mod iridescence;
+#[cfg(any(
+    feature = "sheen",
+    feature = "clearcoat",
+    feature = "specular",
+    feature = "anisotropy",
+    feature = "layered"
+))]
+pub mod layers;
 #[cfg(feature = "lights")]
 pub mod lights;
 #[cfg(feature = "material")]

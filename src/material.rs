@@ -101,7 +101,7 @@ pub const LOBE_PROBABILITY_MIN: f64 = 1.0 / 16.0;
 /// The cosine-weighted hemispherical average of (1 - c)^5: integral of (1 - c)^5 2c dc over
 /// [0, 1] = 1/21. The diffuse lobe sees v.h spread over its whole hemisphere, so its albedo
 /// estimate uses the Fresnel factor at this average instead of at n.v.
-const SCHLICK_WEIGHT_AVERAGE: f64 = 1.0 / 21.0;
+pub(crate) const SCHLICK_WEIGHT_AVERAGE: f64 = 1.0 / 21.0;
 
 /// How the diffuse lobe is weighted against the specular one. See the [module docs](self) for
 /// the formulas and the energy each one gains or loses.
@@ -162,7 +162,7 @@ fn in_unit_rgb<T: Real>(c: V3<T>) -> T::Mask {
 /// the material's 12-ulp bound against f64: `cargo test --test material stability:: --
 /// --nocapture`).
 #[inline]
-fn schlick_weights<T: Real>(c: T) -> (T, T) {
+pub(crate) fn schlick_weights<T: Real>(c: T) -> (T, T) {
     let c = c.saturate();
     let s = T::ONE - c;
     let s2 = s * s;
@@ -183,7 +183,7 @@ fn mix2<T: Real>(a: T, b: T, w: T, one_minus_w: T) -> T {
 /// (1 - F90_d) w and 1 - F_metal = (1 - base)(1 - w), never as 1 - F: F rounds to within an
 /// ulp of 1 at grazing half vectors and for F0 near 1, where the subtraction would cancel.
 #[inline]
-fn fresnel_and_kd<T: Real>(
+pub(crate) fn fresnel_and_kd<T: Real>(
     (w, one_minus_w): (T, T),
     base: V3<T>,
     metallic: T,

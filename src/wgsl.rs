@@ -4,7 +4,8 @@
 //! functions are named by the Rust kernel's path with `::` written `_` (`ggx::d` is `ggx_d`,
 //! `fresnel::schlick_f90` is `fresnel_schlick_f90`), take the Rust kernel's arguments in the
 //! same order (a `V3` argument as its three components `w_x, w_y, w_z`, as the reference CLI
-//! `brdf-ref --list` prints them), and use the same numerically stable forms (GGX D's
+//! `brdf-ref --list` prints them; an argument whose name WGSL reserves takes a trailing
+//! underscore: `tonemap_Operator_apply(operator_, ...)`), and use the same numerically stable forms (GGX D's
 //! cancellation-free denominator (1 - c)(1 + c) + c^2 alpha^2, the alpha clamps
 //! `ALPHA_MIN`/`ALPHA_MAX`, the caps at the largest finite value). Multi-channel results are
 //! `vec3<f32>` (`vec2<f32>` for two); an enumerated parameter (the material's diffuse
@@ -13,8 +14,9 @@
 //!
 //! # Composing
 //! [`COMMON`] must come first, then each family after the families it calls into
-//! ([`Family::needs`]: [`COOK_TORRANCE`] needs [`GGX`] and [`FRESNEL`], [`DIFFUSE`] needs
-//! [`FRESNEL`], [`MATERIAL`] needs [`GGX`]). No
+//! ([`Family::needs`]: [`COOK_TORRANCE`] needs [`GGX`], [`FRESNEL`] and [`BECKMANN`],
+//! [`DIFFUSE`] needs [`FRESNEL`], [`MATERIAL`] needs [`GGX`], [`FRESNEL`], [`BECKMANN`] and
+//! [`COOK_TORRANCE`], [`SAMPLING`] needs [`GGX`] and [`BECKMANN`]). No
 //! family defines a name another family defines, so any such subset concatenated after
 //! [`COMMON`] is one valid WGSL module:
 //!
@@ -50,26 +52,35 @@ pub const FRAME: &str = include_str!("../wgsl/frame.wgsl");
 
 /// The twins of `brdf::ggx`'s free functions (D, the fast D, anisotropic D, Lambda, G1, the
 /// height-correlated V and its Hammon and Filament fast forms, Schlick's G1, k and V) and of
-/// `ggx::Ggx`'s methods on local directions (`ggx_Ggx_d`, `ggx_Ggx_lambda`, ..., taking the
-/// constructor's `alpha_x, alpha_y` first).
+/// `ggx::Ggx`'s methods on local directions (`ggx_Ggx_d`, `ggx_Ggx_lambda`, ...,
+/// `ggx_Ggx_d_visible`, taking the constructor's `alpha_x, alpha_y` first).
 pub const GGX: &str = include_str!("../wgsl/ggx.wgsl");
 
 /// The twins of `brdf::fresnel`'s Schlick family (plain, F90, spherical Gaussian, F82 tint,
-/// RGB forms), the exact dielectric reflectance (polarized and not), F0 and IOR conversions
-/// and the dielectric average's fit.
+/// RGB forms), the exact dielectric reflectance (polarized and not), the exact conductor
+/// reflectance of a complex IOR (and its RGB form), F0 and IOR conversions and the dielectric
+/// average's fit.
 pub const FRESNEL: &str = include_str!("../wgsl/fresnel.wgsl");
 
-/// The twins of `brdf::beckmann`'s D, fast D, Smith's a, Walter's rational Lambda and the
-/// Blinn-Phong exponent conversions.
+/// The twins of `brdf::beckmann`'s D, fast D, Smith's a, the exact Smith Lambda and G1 (WGSL
+/// has no `erf`: written as the Rust kernels write them, without erfc's cancellation, with a
+/// polynomial and a continued fraction for the erfc ratio), Walter's rational Lambda, the
+/// Blinn-Phong exponent conversions, and `beckmann::Beckmann`'s methods on local directions
+/// (`beckmann_Beckmann_d`, ..., `beckmann_Beckmann_d_visible`).
 pub const BECKMANN: &str = include_str!("../wgsl/beckmann.wgsl");
 
-/// The twins of `brdf::cook_torrance`'s half-vector cosines and isotropic GGX lobes from dot
-/// products (constant F, Schlick RGB, exact dielectric). Needs [`GGX`] and [`FRESNEL`] before it.
+/// The twins of `brdf::cook_torrance`: the half vector and its cosines, the forms over a
+/// microfacet model on local directions (`cook_torrance_eval`, ..., the model a `u32`:
+/// 0 = GGX, 1 = Beckmann), and the isotropic GGX and Beckmann lobes from dot products
+/// (constant F, Schlick RGB, exact dielectric, exact conductor). Needs [`GGX`], [`FRESNEL`]
+/// and [`BECKMANN`] before it.
 pub const COOK_TORRANCE: &str = include_str!("../wgsl/cook_torrance.wgsl");
 
-/// The twins of `brdf::diffuse`'s Lambert, qualitative Oren-Nayar (with its A and B), Burley
-/// and renormalized Burley lobes, the diffuse-Fresnel couplings, and the parameter types'
-/// `eval` on local directions (`diffuse_Burley_eval`, ...). Needs [`FRESNEL`] before it.
+/// The twins of `brdf::diffuse`'s Lambert, qualitative and Fujii Oren-Nayar (with its A and
+/// B), EON (exact and fitted, with its directional and average albedos), Burley and
+/// renormalized Burley lobes, the diffuse-Fresnel couplings, and the parameter types' `eval`
+/// on local directions (`diffuse_Burley_eval`, `diffuse_Eon_albedo`, ...). Needs [`FRESNEL`]
+/// before it.
 pub const DIFFUSE: &str = include_str!("../wgsl/diffuse.wgsl");
 
 /// The twins of `brdf::phong`: classic, modified and normalized Phong, Lambert plus Phong,
@@ -82,20 +93,27 @@ pub const PHONG: &str = include_str!("../wgsl/phong.wgsl");
 /// `lights::SpotCone` from its angles).
 pub const LIGHTS: &str = include_str!("../wgsl/lights.wgsl");
 
-/// The twins of `brdf::tonemap`'s sanitize, Reinhard (plain, extended, on luminance, extended
-/// on luminance, Jodie) and Narkowicz ACES curves, and of `brdf::color`'s sRGB and Rec.709
-/// transfer, gamma and luminance.
+/// The twins of `brdf::tonemap`'s sanitize, exposure, Reinhard (plain, extended, on
+/// luminance, extended on luminance, Jodie), Narkowicz's and Hill's ACES, Khronos PBR Neutral,
+/// Hable's, Lottes' and Uchimura's curves (from their parameters), AgX (minimal, three.js's,
+/// Filament's, the looks a `u32`) and `Operator::apply` (the operator a `u32` index into
+/// `Operator::all()`), and of `brdf::color`'s sRGB and Rec.709 transfer, gamma, luminance
+/// and matrix product.
 pub const TONEMAP: &str = include_str!("../wgsl/tonemap.wgsl");
 
-/// The twins of `brdf::material`'s F0 from reflectance and the metallic-roughness BRDF from
-/// dot products (its three diffuse couplings, and glTF's composition). Needs [`GGX`] before it.
+/// The twins of `brdf::material`'s F0 from reflectance, the metallic-roughness BRDF from dot
+/// products (its three diffuse couplings, and glTF's composition; precise and fast tiers), and
+/// `material::MetallicRoughness`'s `eval`, `eval_fast` and `specular_probability` on local
+/// directions. Needs [`GGX`], [`FRESNEL`], [`BECKMANN`] and [`COOK_TORRANCE`] before it.
 pub const MATERIAL: &str = include_str!("../wgsl/material.wgsl");
 
 /// The twins of `brdf::ibl::dfg`'s per-pixel terms: the analytic split-sum fits (Karis mobile,
 /// Lazarov, Narkowicz's two), the split-sum specular, the roughness-mip mappings.
 pub const IBL: &str = include_str!("../wgsl/ibl.wgsl");
 
-/// The twins of `brdf::sampling`'s cosine-hemisphere pdf and reflection Jacobian.
+/// The twins of `brdf::sampling`'s cosine-hemisphere sampler and pdf, reflection Jacobian,
+/// GGX D cos and visible-normal samplers (Heitz's and by spherical caps), D cos and
+/// visible-normal pdfs and GGX reflection pdf. Needs [`GGX`] and [`BECKMANN`] before it.
 pub const SAMPLING: &str = include_str!("../wgsl/sampling.wgsl");
 
 /// [`COMMON`] followed by every family, each after the families it needs: one module defining
@@ -153,7 +171,7 @@ pub const FAMILIES: &[Family] = &[
     Family {
         name: "cook_torrance",
         source: COOK_TORRANCE,
-        needs: &["ggx", "fresnel"],
+        needs: &["ggx", "fresnel", "beckmann"],
     },
     Family {
         name: "diffuse",
@@ -178,7 +196,7 @@ pub const FAMILIES: &[Family] = &[
     Family {
         name: "material",
         source: MATERIAL,
-        needs: &["ggx"],
+        needs: &["ggx", "fresnel", "beckmann", "cook_torrance"],
     },
     Family {
         name: "ibl",
@@ -188,6 +206,6 @@ pub const FAMILIES: &[Family] = &[
     Family {
         name: "sampling",
         source: SAMPLING,
-        needs: &[],
+        needs: &["ggx", "beckmann"],
     },
 ];

@@ -46,6 +46,12 @@ fn brdf_one_minus_sq(c: f32) -> f32 {
     return (1.0 - c) * (1.0 + c);
 }
 
+// (1, 0, 0) for the zero vector (a direction at the horizon), else w (vec3::horizon_if_zero3).
+fn brdf_horizon_if_zero(w: vec3<f32>) -> vec3<f32> {
+    let zero = (w.x == 0.0) & (w.y == 0.0) & (w.z == 0.0);
+    return vec3<f32>(select(w.x, 1.0, zero), select(w.y, 0.0, zero), select(w.z, 0.0, zero));
+}
+
 // The twins of the Rust module `microfacet`'s roughness conversions.
 
 // alpha = r^2 from the perceptual roughness r (glTF's roughnessFactor, Unreal Engine 4's

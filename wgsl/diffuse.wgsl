@@ -1,8 +1,8 @@
 // brdf: diffuse lobes, the twins of the Rust module `diffuse` (Lambert, the qualitative
 // Oren-Nayar model and its A and B, Burley and its renormalized form, the diffuse-Fresnel
 // couplings, and the parameter types' `eval` on local-frame directions). Needs common.wgsl and
-// fresnel.wgsl. The full and Fujii Oren-Nayar forms and EON with its albedos and samplers have
-// no twin yet.
+// fresnel.wgsl. Also the full and Fujii's Oren-Nayar and EON (exact and fitted) with its
+// albedos.
 
 // 0 unless both cosines are above the horizon (domain::above_horizon).
 fn brdf_above_horizon(n_dot_v: f32, n_dot_l: f32, value: f32) -> f32 {
@@ -195,4 +195,251 @@ fn diffuse_AshikhminShirley_eval(
     rho: f32, rs: f32, wo_x: f32, wo_y: f32, wo_z: f32, wi_x: f32, wi_y: f32, wi_z: f32,
 ) -> f32 {
     return diffuse_ashikhmin_shirley(wo_z, wi_z, rho, rs);
+}
+
+// Fujii's shape (t + sigma s, t) of the improved Oren-Nayar lobe and EON's single scattering
+// (Fujii 2012, "A tiny improvement of Oren-Nayar reflectance model"): s = v.l - n.v n.l formed
+// with one rounding (fma) and clamped to [-1, 1], its range for unit vectors; t = max(n.v, n.l)
+// floored at the smallest normal where s > 0 and sigma > 0, else 1. The sum t + sigma s is one
+// fused step: for s < 0 it cancels towards 0 (opposite grazing directions at sigma = 1), so
+// sigma s is not rounded first where the implementation fuses.
+fn brdf_fujii_shape(n_dot_v: f32, n_dot_l: f32, v_dot_l: f32, sigma: f32) -> vec2<f32> {
+    let s = clamp(fma(-n_dot_v, n_dot_l, v_dot_l), -1.0, 1.0);
+    let t = select(1.0, max(max(n_dot_v, n_dot_l), 1.17549435e-38), (s > 0.0) & (sigma > 0.0));
+    return vec2<f32>(fma(s, sigma, t), t);
+}
+
+// Fujii's c1 = 1/2 - 2/(3 pi) = G(0)/pi and EON's c2 = 2/3 - 28/(15 pi), c1 - c2, pi c1 and
+// 1 / (pi^3 (c1 - c2)) (Portsmouth, Kutz, Hill 2025, "EON: A Practical Energy-Preserving Rough
+// Diffuse BRDF", JCGT 14(1)).
+const BRDF_EON_C1: f32 = 0.2877934092108062;
+const BRDF_EON_C2: f32 = 0.07248821245692408;
+const BRDF_EON_C1_MINUS_C2: f32 = 0.21530519675388213;
+const BRDF_EON_PI_C1: f32 = 0.9041296601282299;
+const BRDF_EON_MS_SCALE: f32 = 0.14979450064118327;
+
+// Fujii's improved Oren-Nayar lobe (Fujii 2012): rho / pi (1 + sigma s / t) / (1 + c1 sigma),
+// rho and sigma in [0, 1]; 0 below the horizon.
+fn diffuse_oren_nayar_fujii(
+    n_dot_v: f32, n_dot_l: f32, v_dot_l: f32, rho: f32, sigma: f32,
+) -> f32 {
+    let st = brdf_fujii_shape(n_dot_v, n_dot_l, v_dot_l, sigma);
+    let den = fma(BRDF_EON_C1, sigma, 1.0);
+    let f = (rho * BRDF_FRAC_1_PI) * st.x / den;
+    return brdf_above_horizon(n_dot_v, n_dot_l, f / st.y);
+}
+
+// `diffuse::OrenNayarFujii` on local-frame directions, v.l = wo.wi.
+fn diffuse_OrenNayarFujii_eval(
+    rho: f32, sigma: f32, wo_x: f32, wo_y: f32, wo_z: f32, wi_x: f32, wi_y: f32, wi_z: f32,
+) -> f32 {
+    let v_dot_l = brdf_diffuse_dot(wo_x, wo_y, wo_z, wi_x, wi_y, wi_z);
+    return diffuse_oren_nayar_fujii(wo_z, wi_z, v_dot_l, rho, sigma);
+}
+
+// pi c1 - G(mu) = pi (1 - E(mu)) / (sigma A), the FON albedo's deficit (Portsmouth et al.
+// 2025, `E_FON_exact`), in the Rust kernel's form without cancellation: with S = sqrt(1 - mu^2),
+//   pi c1 - G = S asin(mu) + (1 - S) (pi c1 - S mu (2 + S) / (3 (1 + S))),
+// two non-negative terms (G as printed tends to pi c1 at grazing and c1 - G/pi cancels there),
+// 1 - S as mu^2 / (1 + S) where S > 1/2.
+fn brdf_eon_pi_loss_exact(mu: f32) -> f32 {
+    let si = sqrt((1.0 - mu) * (1.0 + mu));
+    let one_plus_si = 1.0 + si;
+    let one_minus_si = select(1.0 - si, mu * mu / one_plus_si, si > 0.5);
+    let bracket = BRDF_EON_PI_C1 - si * mu * (si + 2.0) / (3.0 * one_plus_si);
+    return si * asin(mu) + bracket * one_minus_si;
+}
+
+// c1 - g(mu) from the paper's quartic fit of G(mu)/pi in m = 1 - mu, clamped at 0 (the fit
+// overshoots c1 by 4.6e-4 at grazing, where the exact value is 0).
+fn brdf_eon_loss_fit(mu: f32) -> f32 {
+    let m = 1.0 - mu;
+    let p = fma(fma(fma(0.0714429953, m, -0.332181442), m, 0.491881867), m, 0.0571085289);
+    return max(BRDF_EON_C1 - p * m, 0.0);
+}
+
+// EON with the given pi c1 - G of each direction (exact or fitted): f = f_FON + f_ms,
+// f_FON = rho / pi (t + sigma s) / ((1 + c1 sigma) t), f_ms = rho^2 sigma (1 + c2 sigma) L_o L_i
+// / ((1 + c1 sigma)(1 + c1 sigma - rho sigma (c1 - c2)) pi^3 (c1 - c2)), L = pi c1 - G: the
+// paper's (1 - E_o)(1 - E_i) / (1 - E_avg) with A cancelled, exactly 0 at sigma = 0.
+fn brdf_eon_with(
+    n_dot_v: f32, n_dot_l: f32, v_dot_l: f32, rho: f32, sigma: f32, loss_o: f32, loss_i: f32,
+) -> f32 {
+    let mu_o = saturate(n_dot_v);
+    let mu_i = saturate(n_dot_l);
+    let st = brdf_fujii_shape(mu_o, mu_i, v_dot_l, sigma);
+    let den = fma(BRDF_EON_C1, sigma, 1.0);
+    let single = (rho * BRDF_FRAC_1_PI) * st.x / den / st.y;
+    let rho_sigma = rho * sigma;
+    let ms_den = den * (den - rho_sigma * BRDF_EON_C1_MINUS_C2);
+    let ms_num = rho_sigma * rho * fma(BRDF_EON_C2, sigma, 1.0) * BRDF_EON_MS_SCALE * loss_o
+        * loss_i;
+    return brdf_above_horizon(n_dot_v, n_dot_l, single + ms_num / ms_den);
+}
+
+// The EON BRDF with the exact FON albedo (Portsmouth, Kutz, Hill 2025, the `f_EON` listing
+// with `exact = true`): rho, sigma in [0, 1]; Lambert rho / pi at sigma = 0; 0 below the
+// horizon.
+fn diffuse_eon(n_dot_v: f32, n_dot_l: f32, v_dot_l: f32, rho: f32, sigma: f32) -> f32 {
+    let lo = brdf_eon_pi_loss_exact(saturate(n_dot_v));
+    let li = brdf_eon_pi_loss_exact(saturate(n_dot_l));
+    return brdf_eon_with(n_dot_v, n_dot_l, v_dot_l, rho, sigma, lo, li);
+}
+
+// EON with the FON albedo from the paper's quartic fit (the `f_EON` listing with
+// `exact = false`): no `asin`.
+fn diffuse_eon_approx(n_dot_v: f32, n_dot_l: f32, v_dot_l: f32, rho: f32, sigma: f32) -> f32 {
+    let lo = BRDF_PI * brdf_eon_loss_fit(saturate(n_dot_v));
+    let li = BRDF_PI * brdf_eon_loss_fit(saturate(n_dot_l));
+    return brdf_eon_with(n_dot_v, n_dot_l, v_dot_l, rho, sigma, lo, li);
+}
+
+// 1 - E(mu) = sigma A (c1 - G(mu)/pi), A = 1 / (1 + c1 sigma), from c1 - G/pi.
+fn brdf_eon_one_minus_e(sigma: f32, loss: f32) -> f32 {
+    return sigma * (1.0 / fma(BRDF_EON_C1, sigma, 1.0)) * loss;
+}
+
+// The FON directional albedo at rho = 1, E(mu) = A (1 + sigma G(mu)/pi) as 1 - sigma A (c1 -
+// G/pi) with the exact G (Portsmouth et al. 2025, `E_FON_exact`); mu = n.v clamped to 1, 0 for
+// mu <= 0.
+fn diffuse_eon_fon_albedo(n_dot_v: f32, sigma: f32) -> f32 {
+    let loss = brdf_eon_pi_loss_exact(saturate(n_dot_v)) * BRDF_FRAC_1_PI;
+    return brdf_above(n_dot_v, 1.0 - brdf_eon_one_minus_e(sigma, loss));
+}
+
+// The FON directional albedo from the paper's quartic fit (`E_FON_approx`), capped at 1.
+fn diffuse_eon_fon_albedo_approx(n_dot_v: f32, sigma: f32) -> f32 {
+    let loss = brdf_eon_loss_fit(saturate(n_dot_v));
+    return brdf_above(n_dot_v, 1.0 - brdf_eon_one_minus_e(sigma, loss));
+}
+
+// The FON albedo's cosine-weighted average E_avg = (1 + c2 sigma) / (1 + c1 sigma).
+fn diffuse_eon_fon_average_albedo(sigma: f32) -> f32 {
+    return fma(BRDF_EON_C2, sigma, 1.0) * (1.0 / fma(BRDF_EON_C1, sigma, 1.0));
+}
+
+// rho_ms = rho^2 E_avg / (1 - rho (1 - E_avg)), capped at rho, exactly 1 at rho = 1.
+fn brdf_eon_rho_ms(rho: f32, sigma: f32) -> f32 {
+    let a = 1.0 / fma(BRDF_EON_C1, sigma, 1.0);
+    let e_avg = fma(BRDF_EON_C2, sigma, 1.0) * a;
+    let one_minus_e_avg = sigma * BRDF_EON_C1_MINUS_C2 * a;
+    let q = rho * rho * e_avg / fma(-rho, one_minus_e_avg, 1.0);
+    return select(min(q, rho), 1.0, rho == 1.0);
+}
+
+// EON's multiple-scattering albedo rho_ms (Portsmouth et al. 2025, `rho_ms`).
+fn diffuse_eon_multiscatter_albedo(rho: f32, sigma: f32) -> f32 {
+    return brdf_eon_rho_ms(rho, sigma);
+}
+
+// EON's directional albedo rho E + rho_ms (1 - E) = rho + (rho_ms - rho)(1 - E) with the exact E
+// (Portsmouth et al. 2025, `E_EON`); 0 for n.v <= 0.
+fn diffuse_eon_albedo(n_dot_v: f32, rho: f32, sigma: f32) -> f32 {
+    let loss = brdf_eon_pi_loss_exact(saturate(n_dot_v)) * BRDF_FRAC_1_PI;
+    let value = fma(brdf_eon_rho_ms(rho, sigma) - rho, brdf_eon_one_minus_e(sigma, loss), rho);
+    return brdf_above(n_dot_v, value);
+}
+
+// EON's directional albedo with E from the fit (`E_EON` with `exact = false`).
+fn diffuse_eon_albedo_approx(n_dot_v: f32, rho: f32, sigma: f32) -> f32 {
+    let loss = brdf_eon_loss_fit(saturate(n_dot_v));
+    let value = fma(brdf_eon_rho_ms(rho, sigma) - rho, brdf_eon_one_minus_e(sigma, loss), rho);
+    return brdf_above(n_dot_v, value);
+}
+
+// `diffuse::Eon` on local-frame directions: diffuse_eon with v.l = wo.wi.
+fn diffuse_Eon_eval(
+    rho: f32, sigma: f32, wo_x: f32, wo_y: f32, wo_z: f32, wi_x: f32, wi_y: f32, wi_z: f32,
+) -> f32 {
+    let v_dot_l = brdf_diffuse_dot(wo_x, wo_y, wo_z, wi_x, wi_y, wi_z);
+    return diffuse_eon(wo_z, wi_z, v_dot_l, rho, sigma);
+}
+
+// `diffuse::Eon::eval_approx` on local-frame directions.
+fn diffuse_Eon_eval_approx(
+    rho: f32, sigma: f32, wo_x: f32, wo_y: f32, wo_z: f32, wi_x: f32, wi_y: f32, wi_z: f32,
+) -> f32 {
+    let v_dot_l = brdf_diffuse_dot(wo_x, wo_y, wo_z, wi_x, wi_y, wi_z);
+    return diffuse_eon_approx(wo_z, wi_z, v_dot_l, rho, sigma);
+}
+
+// `diffuse::Eon::albedo`: diffuse_eon_albedo(wo.z, rho, sigma).
+fn diffuse_Eon_albedo(rho: f32, sigma: f32, wo_x: f32, wo_y: f32, wo_z: f32) -> f32 {
+    return diffuse_eon_albedo(wo_z, rho, sigma);
+}
+
+// `diffuse::Eon::albedo_approx`: diffuse_eon_albedo_approx(wo.z, rho, sigma).
+fn diffuse_Eon_albedo_approx(rho: f32, sigma: f32, wo_x: f32, wo_y: f32, wo_z: f32) -> f32 {
+    return diffuse_eon_albedo_approx(wo_z, rho, sigma);
+}
+
+// The angle theta = acos(c) as a fraction of a right angle, 2 theta / pi, for c in [0, 1]: as
+// 1 - (2 / pi) asin(c) below c = 1/2 and 2 (2 / pi) asin(sqrt((1 - c) / 2)) above (acos's
+// half-angle form, without the cancellation of pi/2 - asin(c) near c = 1).
+fn brdf_angle_over_right_angle(c: f32) -> f32 {
+    let near_right = c < 0.5;
+    let y = asin(select(sqrt(0.5 * (1.0 - c)), c, near_right));
+    // 2 / pi.
+    let scaled = 0.6366197723675814 * y;
+    return select(2.0 * scaled, 1.0 - scaled, near_right);
+}
+
+// The full Oren-Nayar model (Oren and Nayar 1994, "Generalization of Lambert's Reflectance
+// Model", eqs. 27-30 with the interreflection term L2; the crate's `diffuse::oren_nayar_full`):
+// rho / pi (L1 + L2), L1 = C1 + cos(phi) C2 tan(beta) + (1 - |cos(phi)|) C3 tan((alpha +
+// beta) / 2), L2 = 0.17 rho sigma^2 / (sigma^2 + 0.13) (1 - cos(phi) (2 beta / pi)^2), alpha
+// and beta the larger and smaller polar angle, C1 = A, C2 = 0.45 sigma^2 / (sigma^2 + 0.09)
+// (sin(alpha), or sin(alpha) - (2 beta / pi)^3 where cos(phi) < 0), C3 = 0.125 sigma^2 /
+// (sigma^2 + 0.09) (4 alpha beta / pi^2)^2. In the Rust kernel's forms: 1 - |cos(phi)| as
+// G / (P (P + |s|)) with the Gram determinant G = (1 - n.v^2)(1 - n.l^2) - s^2 (as 1 - |s / P|
+// it cancels for opposite grazing directions), C2's difference near grazing as
+// x (3 - 3 x + x^2) - cos^2(alpha) / (1 + sin(alpha)), x = 1 - 2 beta / pi, the tangents'
+// denominators floored at the smallest normal, L1 floored at 0; cos(phi) = 0 at a pole.
+// rho in [0, 1], sigma >= 0 (radians); 0 below the horizon.
+fn diffuse_oren_nayar_full(
+    n_dot_v: f32, n_dot_l: f32, v_dot_l: f32, rho: f32, sigma: f32,
+) -> f32 {
+    let cv = min(n_dot_v, 1.0);
+    let cl = min(n_dot_l, 1.0);
+    let sin2_v = fma(-cv, cv, 1.0);
+    let sin2_l = fma(-cl, cl, 1.0);
+    let sin_v = sqrt(sin2_v);
+    let sin_l = sqrt(sin2_l);
+    let v_is_alpha = cv <= cl;
+    let cos_alpha = min(cv, cl);
+    let cos_beta = max(cv, cl);
+    let sin_alpha = select(sin_l, sin_v, v_is_alpha);
+    let sin_beta = select(sin_v, sin_l, v_is_alpha);
+    let a = brdf_angle_over_right_angle(saturate(cos_alpha));
+    let b = brdf_angle_over_right_angle(saturate(cos_beta));
+    let s = fma(-n_dot_v, n_dot_l, v_dot_l);
+    let p = sin_v * sin_l;
+    let at_pole = !(p > 0.0);
+    let safe_p = select(p, 1.0, at_pole);
+    let cos_phi = clamp(select(s / safe_p, 0.0, at_pole), -1.0, 1.0);
+    let gram = max(sin2_v * sin2_l - s * s, 0.0);
+    let one_minus_abs_cos_phi = clamp(select(gram / (safe_p * (safe_p + abs(s))), 1.0, at_pole),
+        0.0, 1.0);
+    let tan_beta = sin_beta / max(cos_beta, 1.17549435e-38);
+    let tan_half = (sin_alpha + sin_beta) / max(cos_alpha + cos_beta, 1.17549435e-38);
+    let x = 1.0 - b;
+    let cubic = x * (3.0 + x * (x - 3.0));
+    let grazing_difference = cubic - cos_alpha * cos_alpha / (1.0 + sin_alpha);
+    let difference = select(sin_alpha - b * b * b, grazing_difference, cos_beta < 0.5);
+    let k = brdf_oren_nayar_rational(sigma, 0.09);
+    let c2 = 0.45 * k * select(difference, sin_alpha, cos_phi >= 0.0);
+    let ab = a * b;
+    let c3 = 0.125 * k * (ab * ab);
+    let l1 = max(diffuse_oren_nayar_a(sigma) + cos_phi * c2 * tan_beta
+        + one_minus_abs_cos_phi * c3 * tan_half, 0.0);
+    let l2 = rho * (0.17 * brdf_oren_nayar_rational(sigma, 0.13)) * (1.0 - cos_phi * (b * b));
+    return brdf_above_horizon(n_dot_v, n_dot_l, BRDF_FRAC_1_PI * rho * (l1 + l2));
+}
+
+// `diffuse::OrenNayarFull` on local-frame directions, v.l = wo.wi.
+fn diffuse_OrenNayarFull_eval(
+    rho: f32, sigma: f32, wo_x: f32, wo_y: f32, wo_z: f32, wi_x: f32, wi_y: f32, wi_z: f32,
+) -> f32 {
+    let v_dot_l = brdf_diffuse_dot(wo_x, wo_y, wo_z, wi_x, wi_y, wi_z);
+    return diffuse_oren_nayar_full(wo_z, wi_z, v_dot_l, rho, sigma);
 }

@@ -148,3 +148,85 @@ fn fresnel_dielectric(cos_theta_i: f32, eta: f32) -> f32 {
     let r = fresnel_dielectric_polarized(cos_theta_i, eta);
     return 0.5 * (r.x + r.y);
 }
+
+// Exact unpolarized conductor Fresnel reflectance F = (|r_perp|^2 + |r_par|^2) / 2 for the
+// complex relative IOR N = eta + i k (Born and Wolf, "Principles of Optics", section 14.2), in
+// the Rust kernels' cancellation-free arrangement (fresnel::conductor_fast; r_perp =
+// -u / (c + s)^2 as in Lagarde 2013, "Memo on Fresnel equations"):
+//   F = |u|^2 A / (|c + s|^4 (A + B)),  u = N^2 - 1,  s = sqrt(N^2 - sin^2 theta_i),
+//   A = c^2 |s|^2 + s2^2,  B = 2 c s2 Re(s),  |c + s|^2 = c (c + 2 Re(s)) + |s|^2,
+// s2 = (1 - c)(1 + c), Re(N^2) - 1 = (eta - 1)(eta + 1) - k^2: every sum adds non-negative
+// terms. N is scaled by 1 / max(eta, k) above 2^16 and raised to 2^-46 below it, z = s^2 and
+// u by powers of two (exact) so that no square overflows or underflows (the scalings of the
+// Rust kernel's f32 path). eta in (0, MAX], k in [0, MAX]; c = cos_theta_i clamped to [0, 1];
+// 1 at c = 0 (0 for eta = 1, k = 0: no interface).
+fn fresnel_conductor_fast(cos_theta_i: f32, eta: f32, k: f32) -> f32 {
+    let big = max(eta, k);
+    // 2^16 and 2^-46 (f32's epsilon squared).
+    let large = big > 65536.0;
+    let tiny = big < 1.4210854715202004e-14;
+    let n_scale = select(1.0, 1.4210854715202004e-14, tiny) / select(1.0, big, large | tiny);
+    let re = eta * n_scale;
+    let im = k * n_scale;
+    let m = select(1.0, n_scale, large);
+    let sigma = select(1.0, big, large);
+    let n2_re = fma(re, re, -(im * im));
+    let u_re = fma(re - m, re + m, -(im * im));
+    let u_im = 2.0 * re * im;
+    let u_abs2 = fma(u_re, u_re, u_im * u_im);
+    // |u| < 2^-40 (eta = 1, k tiny): z scaled by 2^63 and u by 2^61 before squaring; else z
+    // by 2^27.
+    let lifted = u_abs2 < 8.271806125530277e-25;
+    let z_up = select(134217728.0, 9.223372036854776e18, lifted);
+    let z_down = select(7.450580596923828e-9, 1.0842021724855044e-19, lifted);
+    let t_down = select(6.103515625e-5, 2.3283064365386963e-10, lifted);
+    let lift = select(1.0, 2.305843009213694e18, lifted);
+    let ul_re = u_re * lift;
+    let ul_im = u_im * lift;
+    let ul_abs2 = fma(ul_re, ul_re, ul_im * ul_im);
+    let ml = m * lift;
+    let zl_down = z_down * lift;
+    // |Im z| raised to 2^-60 where lifted, which keeps |c + s|^4 normal even at u = 0.
+    let b = max(abs(u_im) * z_up, select(0.0, 8.673617379884035e-19, lifted));
+    let no_interface = (u_re == 0.0) & (u_im == 0.0);
+    let c = saturate(cos_theta_i);
+    let s2 = (1.0 - c) * (1.0 + c);
+    let cm = c * m;
+    let cm2 = cm * cm;
+    // z = u + (c m)^2 where (c m)^2 <= Re N^2, else Re N^2 - s2 m^2: the form adding the
+    // smaller terms.
+    let z_re = select(fma(s2, -(m * m), n2_re), fma(cm, cm, u_re), cm2 <= n2_re);
+    // The principal root without cancellation (Press et al., "Numerical Recipes", 5.5):
+    // t = sqrt(|z| + |Re z|) (scaled), 2 Re(s) = g t.
+    let a = abs(z_re) * z_up;
+    let norm = sqrt(fma(a, a, b * b));
+    let sum = norm + a;
+    let t = sqrt(sum);
+    let g = select((b + b) * t_down / sum, 2.0 * t_down, z_re >= 0.0);
+    let s_abs2 = norm * z_down;
+    let pl_abs2 = (c * ml) * fma(g, t, cm) + norm * zl_down;
+    // rho = c sigma capped at 2^46, where A / (A + B) rounds to 1 regardless.
+    let rho = min(c * sigma, 70368744177664.0);
+    let a_par = fma(rho * rho, s_abs2, s2 * s2);
+    let ab = fma(rho * s2 * g, t, a_par);
+    let ratio = (ul_abs2 * a_par) / (pl_abs2 * pl_abs2 * ab);
+    return select(select(1.0, 0.0, no_interface), min(ratio, 1.0), c > 0.0);
+}
+
+// The exact conductor Fresnel of fresnel::conductor: the same F in the same arrangement as
+// fresnel_conductor_fast (the Rust kernel evaluates it in f64 and rounds once; the twin
+// computes in f32).
+fn fresnel_conductor(cos_theta_i: f32, eta: f32, k: f32) -> f32 {
+    return fresnel_conductor_fast(cos_theta_i, eta, k);
+}
+
+// fresnel_conductor per channel of RGB eta and k.
+fn fresnel_conductor_rgb(
+    cos_theta_i: f32, eta_r: f32, eta_g: f32, eta_b: f32, k_r: f32, k_g: f32, k_b: f32,
+) -> vec3<f32> {
+    return vec3<f32>(
+        fresnel_conductor(cos_theta_i, eta_r, k_r),
+        fresnel_conductor(cos_theta_i, eta_g, k_g),
+        fresnel_conductor(cos_theta_i, eta_b, k_b),
+    );
+}

@@ -131,12 +131,6 @@ fn ggx_v_schlick(n_dot_v: f32, n_dot_l: f32, k: f32) -> f32 {
 // (alpha_x, alpha_y) and local-frame directions (the normal is z). A zero direction takes the
 // horizon's values, as in the Rust methods.
 
-// (1, 0, 0) for the zero vector, else w (vec3::horizon_if_zero3).
-fn brdf_horizon_if_zero(w: vec3<f32>) -> vec3<f32> {
-    let zero = (w.x == 0.0) & (w.y == 0.0) & (w.z == 0.0);
-    return vec3<f32>(select(w.x, 1.0, zero), select(w.y, 0.0, zero), select(w.z, 0.0, zero));
-}
-
 // |z|, q = (alpha_x x)^2 + (alpha_y y)^2 and s = sqrt(z^2 + q) of a direction.
 fn brdf_ggx_smith(alpha_x: f32, alpha_y: f32, w: vec3<f32>) -> vec3<f32> {
     let v = brdf_horizon_if_zero(w);
@@ -202,4 +196,17 @@ fn ggx_Ggx_v_correlated(
     let o = brdf_ggx_smith(alpha_x, alpha_y, vec3<f32>(wo_x, wo_y, wo_z));
     let i = brdf_ggx_smith(alpha_x, alpha_y, vec3<f32>(wi_x, wi_y, wi_z));
     return brdf_ggx_half_over(o.z * i.x + i.z * o.x);
+}
+
+// The distribution of visible normals D_wo(m) = G1(wo) max(0, wo.m) D(m) / |wo.z| (Heitz 2014,
+// eq. 38), G1 / |wo.z| = 1 / (|wo.z| + |wo.z| Lambda) finite at the horizon (0 there).
+fn ggx_Ggx_d_visible(
+    alpha_x: f32, alpha_y: f32, wo_x: f32, wo_y: f32, wo_z: f32, m_x: f32, m_y: f32, m_z: f32,
+) -> f32 {
+    let c = abs(wo_z);
+    let cl = ggx_Ggx_cos_lambda(alpha_x, alpha_y, wo_x, wo_y, wo_z);
+    let g1_over_cos = select(0.0, 1.0 / (c + cl), c > 0.0);
+    let cos_om = max(fma(wo_x, m_x, fma(wo_y, m_y, wo_z * m_z)), 0.0);
+    let d = ggx_Ggx_d(alpha_x, alpha_y, m_x, m_y, m_z);
+    return min(min(g1_over_cos * cos_om, BRDF_F32_MAX) * d, BRDF_F32_MAX);
 }

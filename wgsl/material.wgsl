@@ -1,7 +1,9 @@
 // brdf: the glTF 2.0 metallic-roughness material, the twins of the Rust module `material`
 // (F0 from Filament's reflectance, the BRDF from dot products with its three diffuse
-// couplings, and glTF's own composition). Needs common.wgsl and ggx.wgsl. The direction-vector
-// forms and the lobe sampling have no twin yet.
+// couplings, and glTF's own composition, in the crate's precise and working-precision tiers;
+// `MetallicRoughness` on local-frame directions and its lobe-selection probability). Needs
+// common.wgsl, ggx.wgsl and, for the direction forms, cook_torrance.wgsl (with fresnel.wgsl
+// and beckmann.wgsl). The lobe sampling has no twin yet.
 
 // F0 = 0.16 reflectance^2 (Guy and Agopian 2018, "Physically Based Rendering in Filament",
 // 4.8.3.2).
@@ -39,6 +41,18 @@ fn material_metallic_roughness(
     metallic: f32, roughness: f32, dielectric_f0: f32, coupling: u32,
 ) -> vec3<f32> {
     let alpha = microfacet_alpha_from_perceptual(roughness);
+    let dv = min(ggx_d(n_dot_h, alpha) * ggx_v_correlated(n_dot_v, n_dot_l, alpha), BRDF_F32_MAX);
+    return brdf_material_with_dv(n_dot_v, n_dot_l, v_dot_h, base_color_r, base_color_g,
+        base_color_b, metallic, dielectric_f0, coupling, dv);
+}
+
+// The material from D V (capped) and the other cosines: the Fresnel mix and the diffuse
+// coupling per channel.
+fn brdf_material_with_dv(
+    n_dot_v: f32, n_dot_l: f32, v_dot_h: f32,
+    base_color_r: f32, base_color_g: f32, base_color_b: f32,
+    metallic: f32, dielectric_f0: f32, coupling: u32, dv: f32,
+) -> vec3<f32> {
     let c = saturate(v_dot_h);
     let s = 1.0 - c;
     let s2 = s * s;
@@ -48,7 +62,6 @@ fn material_metallic_roughness(
     let f_dielectric = brdf_material_mix2(dielectric_f0, 1.0, w, one_minus_w);
     let g_dielectric = brdf_material_mix2(1.0 - dielectric_f0, 0.0, w, one_minus_w);
     let base = vec3<f32>(base_color_r, base_color_g, base_color_b);
-    let dv = min(ggx_d(n_dot_h, alpha) * ggx_v_correlated(n_dot_v, n_dot_l, alpha), BRDF_F32_MAX);
     return vec3<f32>(
         brdf_material_lobe(n_dot_v, n_dot_l, base.x, metallic, one_minus_m, w, one_minus_w,
             f_dielectric, g_dielectric, dv, coupling),
@@ -83,4 +96,83 @@ fn material_gltf(
 ) -> vec3<f32> {
     return material_metallic_roughness(n_dot_v, n_dot_l, n_dot_h, v_dot_h,
         base_color_r, base_color_g, base_color_b, metallic, roughness, 0.04, 0u);
+}
+
+// material_metallic_roughness in the working-precision tier: Filament's D_GGX (ggx_d_fast)
+// in place of the precise D.
+fn material_metallic_roughness_fast(
+    n_dot_v: f32, n_dot_l: f32, n_dot_h: f32, v_dot_h: f32,
+    base_color_r: f32, base_color_g: f32, base_color_b: f32,
+    metallic: f32, roughness: f32, dielectric_f0: f32, coupling: u32,
+) -> vec3<f32> {
+    let alpha = microfacet_alpha_from_perceptual(roughness);
+    let dv = min(ggx_d_fast(n_dot_h, alpha) * ggx_v_correlated(n_dot_v, n_dot_l, alpha),
+        BRDF_F32_MAX);
+    return brdf_material_with_dv(n_dot_v, n_dot_l, v_dot_h, base_color_r, base_color_g,
+        base_color_b, metallic, dielectric_f0, coupling, dv);
+}
+
+// material_gltf in the working-precision tier.
+fn material_gltf_fast(
+    n_dot_v: f32, n_dot_l: f32, n_dot_h: f32, v_dot_h: f32,
+    base_color_r: f32, base_color_g: f32, base_color_b: f32, metallic: f32, roughness: f32,
+) -> vec3<f32> {
+    return material_metallic_roughness_fast(n_dot_v, n_dot_l, n_dot_h, v_dot_h,
+        base_color_r, base_color_g, base_color_b, metallic, roughness, 0.04, 0u);
+}
+
+// `material::MetallicRoughness` (as its constructor builds it: glTF's dielectric F0 = 0.04,
+// F90 = 1, glTF's coupling) on local-frame directions: the half vector h = normalize(wo + wi)
+// gives n.h = h.z and v.h = wo.h.
+fn material_MetallicRoughness_eval(
+    base_color_r: f32, base_color_g: f32, base_color_b: f32, metallic: f32, roughness: f32,
+    wo_x: f32, wo_y: f32, wo_z: f32, wi_x: f32, wi_y: f32, wi_z: f32,
+) -> vec3<f32> {
+    let hv = cook_torrance_half_vector(wo_x, wo_y, wo_z, wi_x, wi_y, wi_z);
+    return material_gltf(wo_z, wi_z, hv.z, hv.w, base_color_r, base_color_g, base_color_b,
+        metallic, roughness);
+}
+
+// MetallicRoughness::eval in the working-precision tier.
+fn material_MetallicRoughness_eval_fast(
+    base_color_r: f32, base_color_g: f32, base_color_b: f32, metallic: f32, roughness: f32,
+    wo_x: f32, wo_y: f32, wo_z: f32, wi_x: f32, wi_y: f32, wi_z: f32,
+) -> vec3<f32> {
+    let hv = cook_torrance_half_vector(wo_x, wo_y, wo_z, wi_x, wi_y, wi_z);
+    return material_gltf_fast(wo_z, wi_z, hv.z, hv.w, base_color_r, base_color_g, base_color_b,
+        metallic, roughness);
+}
+
+// One channel's (F, kd) of the glTF material for Schlick weights (w, 1 - w).
+fn brdf_material_f_kd(base: f32, metallic: f32, w: f32, one_minus_w: f32) -> vec2<f32> {
+    let f_dielectric = brdf_material_mix2(0.04, 1.0, w, one_minus_w);
+    let g_dielectric = brdf_material_mix2(0.96, 0.0, w, one_minus_w);
+    let f_metal = brdf_material_mix2(base, 1.0, w, one_minus_w);
+    return vec2<f32>(brdf_material_lerp(f_dielectric, f_metal, metallic),
+        (1.0 - metallic) * g_dielectric);
+}
+
+// The probability of choosing the specular lobe in the material's one-sample MIS sampler:
+// S / (S + D), S the mean over channels of F at n.wo = wo.z, D the mean of kd base with kd
+// at Schlick's cosine-weighted average weight 1/21, clamped to [1/16, 15/16]; 1 where D = 0.
+fn material_MetallicRoughness_specular_probability(
+    base_color_r: f32, base_color_g: f32, base_color_b: f32, metallic: f32, roughness: f32,
+    wo_x: f32, wo_y: f32, wo_z: f32,
+) -> f32 {
+    let c = saturate(wo_z);
+    let t = 1.0 - c;
+    let t2 = t * t;
+    let w = t2 * t2 * t;
+    let one_minus_w = c * fma(t, fma(t, fma(t, t + 1.0, 1.0), 1.0), 1.0);
+    let fr = brdf_material_f_kd(base_color_r, metallic, w, one_minus_w);
+    let fg = brdf_material_f_kd(base_color_g, metallic, w, one_minus_w);
+    let fb = brdf_material_f_kd(base_color_b, metallic, w, one_minus_w);
+    // 1/21 and 20/21.
+    let kr = brdf_material_f_kd(base_color_r, metallic, 0.047619047619047616, 0.9523809523809523);
+    let kg = brdf_material_f_kd(base_color_g, metallic, 0.047619047619047616, 0.9523809523809523);
+    let kb = brdf_material_f_kd(base_color_b, metallic, 0.047619047619047616, 0.9523809523809523);
+    let s = (fr.x + fg.x + fb.x) * 0.3333333333333333;
+    let d = (kr.y * base_color_r + kg.y * base_color_g + kb.y * base_color_b) * 0.3333333333333333;
+    let p = clamp(s / (s + d), 0.0625, 0.9375);
+    return select(p, 1.0, d == 0.0);
 }

@@ -46,10 +46,13 @@
 //! view x, y, z, then light x, y, z, unit vectors with z > 0): it times `ggx_d`, `ggx_d_plain`
 //! (GGX D in working precision, no error-free transformations: a yardstick, not a crate kernel),
 //! `ggx_d_fast`, `beckmann_d`, `beckmann_d_fast`,
-//! `rough_conductor` (from the directions: half vector, cosines, then the term),
-//! `rough_conductor_fast` (the cosines of the half vector by `cook_torrance::half_cosines`,
-//! then the fast term), `rough_conductor_fast_borrowed` (the same kernel as a closure that
-//! borrows its parameters instead of moving them: see the `batch` module docs),
+//! `rough_conductor` and `rough_conductor_fast` (`cook_torrance::ggx_conductor_local` and
+//! `ggx_conductor_local_fast` from the directions, times n.l), `rough_conductor_cosines` (from
+//! the directions: half vector, cosines, then `cook_torrance::ggx` with `fresnel::conductor`),
+//! `rough_conductor_cosines_fast` (the cosines of the half vector by
+//! `cook_torrance::half_cosines`, then the fast term), `rough_conductor_fast_borrowed` (that
+//! kernel as a closure that borrows its parameters instead of moving them: see the `batch`
+//! module docs),
 //! `material_gltf` and `material_gltf_fast` (`material::gltf` and `gltf_fast` from the
 //! directions through `half_cosines`, base colour (0.9, 0.6, 0.3), metallic 0.5, roughness 0.5,
 //! three output slices), `material_textbook_scalar` and `material_textbook_inlined` (the same
@@ -61,7 +64,10 @@
 //! through `batch::par_run_f32` on all cores (rayon's global pool; the textbook scalar row
 //! and the copy stay on one thread). With `BRDF_THROUGHPUT_OUTPUT=<dir>` it also writes each
 //! kernel's outputs there as raw `f32` (`<kernel>.f32`; the material rows' red channel), for
-//! the script to compare values.
+//! the script to compare values. `BRDF_THROUGHPUT_ONLY=<kernel>,<kernel>` runs only the kernels
+//! named (to profile one with `perf record`). With `BRDF_THROUGHPUT_CLOCK=cpu` (one thread only)
+//! each run is timed by the thread's CPU clock instead of the wall clock, which leaves out the
+//! time the thread waited for a core on a shared machine.
 
 use brdf::Cosines;
 use brdf::microfacet::Alpha;
@@ -560,6 +566,32 @@ fn timing_mode(path: &str) -> Result<(), String> {
             Box::new(|o: &mut [f32]| {
                 let _ = run8(par, a, [o], move |[vx, vy, vz, lx, ly, lz]| {
                     let (v, l) = (V3::new(vx, vy, vz), V3::new(lx, ly, lz));
+                    [
+                        cook_torrance::ggx_conductor_local(v, l, Alpha(alpha), eta, k)
+                            * lz.saturate(),
+                    ]
+                });
+            }),
+        ),
+        (
+            "rough_conductor_fast",
+            Box::new(|o: &mut [f32]| {
+                let _ = run8(par, a, [o], move |[vx, vy, vz, lx, ly, lz]| {
+                    let (v, l) = (V3::new(vx, vy, vz), V3::new(lx, ly, lz));
+                    [
+                        cook_torrance::ggx_conductor_local_fast(v, l, Alpha(alpha), eta, k)
+                            * lz.saturate(),
+                    ]
+                });
+            }),
+        ),
+        (
+            // The dot-product route: the cosines of the half vector, then `cook_torrance::ggx`
+            // with `fresnel::conductor` (D from n.h alone).
+            "rough_conductor_cosines",
+            Box::new(|o: &mut [f32]| {
+                let _ = run8(par, a, [o], move |[vx, vy, vz, lx, ly, lz]| {
+                    let (v, l) = (V3::new(vx, vy, vz), V3::new(lx, ly, lz));
                     let s = v + l;
                     // `Real::recip`, not `wide`'s inherent `recip` (a 12-bit estimate on AVX).
                     let h = s * Real::recip(s.length());
@@ -579,7 +611,7 @@ fn timing_mode(path: &str) -> Result<(), String> {
             }),
         ),
         (
-            "rough_conductor_fast",
+            "rough_conductor_cosines_fast",
             Box::new(|o: &mut [f32]| {
                 let _ = run8(par, a, [o], move |[vx, vy, vz, lx, ly, lz]| {
                     let (v, l) = (V3::new(vx, vy, vz), V3::new(lx, ly, lz));
@@ -684,7 +716,16 @@ fn timing_mode(path: &str) -> Result<(), String> {
             }),
         ),
     ];
+    let cpu_clock = !par && std::env::var("BRDF_THROUGHPUT_CLOCK").is_ok_and(|v| v == "cpu");
+    let only = std::env::var("BRDF_THROUGHPUT_ONLY").ok();
+    let wanted = |name: &str| {
+        only.as_ref()
+            .is_none_or(|o| o.split(',').any(|k| k == name))
+    };
     for (name, pass) in &mut kernels {
+        if !wanted(name) {
+            continue;
+        }
         pass(&mut out);
         if let Some(dir) = &out_dir {
             let raw: Vec<u8> = out.iter().flat_map(|x| x.to_le_bytes()).collect();
@@ -692,14 +733,32 @@ fn timing_mode(path: &str) -> Result<(), String> {
             std::fs::write(&file, raw).map_err(|e| format!("{file}: {e}"))?;
         }
         for _ in 0..runs {
-            let t = Instant::now();
+            let (t, c) = (Instant::now(), thread_cpu_s());
             pass(black_box(&mut out));
-            let ms = t.elapsed().as_secs_f64() * 1e3;
+            let ms = if cpu_clock {
+                (thread_cpu_s() - c) * 1e3
+            } else {
+                t.elapsed().as_secs_f64() * 1e3
+            };
             black_box(&out);
             println!("time {name} {ms:.4}");
         }
     }
     Ok(())
+}
+
+/// Seconds of CPU time the calling thread has used (`CLOCK_THREAD_CPUTIME_ID`).
+fn thread_cpu_s() -> f64 {
+    let mut ts = libc::timespec {
+        tv_sec: 0,
+        tv_nsec: 0,
+    };
+    // SAFETY: `ts` is a valid, writable timespec for the duration of the call, and the clock id
+    // is one Linux defines; on failure `ts` stays 0 (the timing mode then reports 0 ms).
+    unsafe { libc::clock_gettime(libc::CLOCK_THREAD_CPUTIME_ID, &mut ts) };
+    #[allow(clippy::cast_precision_loss)] // seconds since the thread started: far below 2^53 ns
+    let s = ts.tv_sec as f64 + ts.tv_nsec as f64 * 1e-9;
+    s
 }
 
 fn main() {

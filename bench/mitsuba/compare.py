@@ -19,19 +19,26 @@ repository root. It
    - the rough conductor, one channel, f cos(theta_l) as a BSDF evaluation returns it:
      Mitsuba D(h) G(v, l, h) F_conductor(v.h, eta + i k) / (4 cos(theta_v)) with its
      distribution's `eval` and `G` and `mi.fresnel_conductor` (the arithmetic of its
-     `roughconductor` plugin's `eval`), brdf D V F n.l with `cook_torrance::ggx` and
-     `fresnel::conductor`, both forming the half vector from the two directions;
+     `roughconductor` plugin's `eval`), brdf `cook_torrance::ggx_conductor_local` (D V F from
+     the two directions, D from the half vector's components) times n.l;
    - beside each, brdf's working-precision variant against the same Mitsuba time:
-     `ggx::d_fast`, `beckmann::d_fast`, and the rough conductor with both `ggx::d_fast` and
-     `fresnel::conductor_fast`, its half-vector cosines from `cook_torrance::half_cosines`
-     (their error against the exact forms is in their docs);
+     `ggx::d_fast`, `beckmann::d_fast`, `cook_torrance::ggx_conductor_local_fast` (their
+     error against the exact forms is in their docs), and for the rough conductor the
+     dot-product route too (`half_vector`, then `cook_torrance::ggx` with `fresnel::conductor`,
+     or `half_cosines` with `ggx::d_fast` and `fresnel::conductor_fast`), whose D reads n.h
+     alone;
    - the copy floor: brdf's `copy_from_slice` of one input slice into the output slice;
    - a yardstick row: GGX D in plain working precision (defined in benches/throughput.rs,
      not a brdf kernel), to show what brdf's correctly rounded `ggx::d` costs.
 
 The whole process (Python, drjit's worker and the brdf binary) is pinned to one core with
-`taskset -c 0` and drjit runs one thread. Absolute times move from run to run (and on a shared
-machine by much more); the ratio column, from one interleaved run, is the figure to quote.
+`taskset -c 0` and drjit runs one thread. Each side is timed by its CPU clock (`--clock cpu`,
+the default: Python's `process_time`, which counts drjit's worker thread and the tracing,
+and the brdf thread's own), which leaves out the time spent waiting for the core on a shared
+machine; `--clock wall` times elapsed time, as `--parallel` always does. Absolute times move
+from run to run (and on a shared machine by much more); the ratio column, from one
+interleaved run, is the figure to quote. `--sizes` prints instead ns per element for batches
+of 10^3 up to `--n` elements on both sides.
 
 Differences the ratio carries: Mitsuba's `eval(m)` reads the three components of m (12 bytes
 per element), brdf's D the cosine only (4 bytes); Mitsuba's G is the separable Smith
@@ -60,13 +67,20 @@ KERNELS = ["ggx_d", "beckmann_d", "rough_conductor"]
 # brdf's working-precision variants, each timed against the same Mitsuba kernel as its exact form.
 FAST = {"ggx_d_fast": "ggx_d", "beckmann_d_fast": "beckmann_d",
         "rough_conductor_fast": "rough_conductor"}
+# The dot-product route of the rough conductor (D from n.h alone), kept for comparison.
+COSINES = {"rough_conductor_cosines": "rough_conductor",
+           "rough_conductor_cosines_fast": "rough_conductor"}
 LABELS = {
     "ggx_d": "GGX D",
     "beckmann_d": "Beckmann D",
-    "rough_conductor": "rough conductor: D, G, complex Fresnel, times cos (1 channel)",
+    "rough_conductor": "rough conductor: D, G, complex Fresnel, times cos (1 channel), "
+                       "`cook_torrance::ggx_conductor_local`",
     "ggx_d_fast": "GGX D, `ggx::d_fast` (working precision)",
     "beckmann_d_fast": "Beckmann D, `beckmann::d_fast` (working precision)",
-    "rough_conductor_fast": "rough conductor with `d_fast`, `conductor_fast`, `half_cosines`",
+    "rough_conductor_fast": "rough conductor, `ggx_conductor_local_fast` (working precision)",
+    "rough_conductor_cosines": "rough conductor by the cosines: `half_vector`, `cook_torrance::ggx`, "
+                               "`fresnel::conductor` (D from n.h alone)",
+    "rough_conductor_cosines_fast": "the same with `d_fast`, `conductor_fast`, `half_cosines`",
 }
 
 
@@ -109,11 +123,17 @@ def build_brdf(repo, target_dir):
     raise RuntimeError("cargo did not report the throughput executable")
 
 
-def run_brdf(exe, raw, runs, out_dir=None, parallel=False):
+CLOCK = {"clock": "cpu"}
+
+
+def run_brdf(exe, raw, runs, out_dir=None, parallel=False, only=None):
     """One brdf timing run: {kernel: [ms, ...]}; over all cores (`batch::par_run_f32`) when
-    `parallel`."""
+    `parallel`; only the kernels in `only` when given."""
     env = dict(os.environ, BRDF_THROUGHPUT_INPUT=raw, BRDF_THROUGHPUT_RUNS=str(runs),
-               BRDF_THROUGHPUT_PARALLEL="1" if parallel else "0")
+               BRDF_THROUGHPUT_PARALLEL="1" if parallel else "0",
+               BRDF_THROUGHPUT_CLOCK=CLOCK["clock"])
+    if only:
+        env["BRDF_THROUGHPUT_ONLY"] = ",".join(only)
     if out_dir:
         env["BRDF_THROUGHPUT_OUTPUT"] = out_dir
     out = subprocess.run([exe], env=env, check=True, capture_output=True, text=True)
@@ -189,7 +209,8 @@ def measure_accuracy(soa, mi_values, brdf_values, n_check, seed):
     for name in KERNELS:
         r_mi, r_brdf = refs64[name][0](), refs64[name][1]()
         rows = [("mitsuba", name, np.asarray(mi_values[name], np.float32), r_mi, 0)]
-        for row in (name, name + "_fast") + (("ggx_d_plain",) if name == "ggx_d" else ()):
+        extra = {"ggx_d": ("ggx_d_plain",), "rough_conductor": tuple(COSINES)}.get(name, ())
+        for row in (name, name + "_fast") + extra:
             if row in brdf_values:
                 rows.append(("brdf", row, brdf_values[row], r_brdf, 1))
         for side, row, x, r, which in rows:
@@ -217,13 +238,16 @@ def measure_accuracy(soa, mi_values, brdf_values, n_check, seed):
 
 
 def time_mitsuba(kernel):
+    """(ms, result) of one evaluation: by this process's CPU clock (all its threads: Python's
+    tracing and drjit's worker) under `--clock cpu`, else by the wall clock."""
     import drjit as dr
 
-    t = time.perf_counter()
+    clock = time.process_time if CLOCK["clock"] == "cpu" else time.perf_counter
+    t = clock()
     r = kernel()
     dr.eval(r)
     dr.sync_thread()
-    return (time.perf_counter() - t) * 1e3, r
+    return (clock() - t) * 1e3, r
 
 
 def main():
@@ -241,37 +265,52 @@ def main():
                         "batch::par_run_f32 (rayon), and brdf on one thread beside it")
     p.add_argument("--check", type=int, default=1000,
                    help="elements on which mpmath checks the float64 reference")
+    p.add_argument("--clock", choices=["cpu", "wall"], default="cpu",
+                   help="cpu (default): each side's CPU time, which leaves out the time it "
+                        "waited for a core on a shared machine; wall: elapsed time (always "
+                        "with --parallel)")
+    p.add_argument("--sizes", action="store_true",
+                   help="instead of the main table: ns per element for batches of 10^3 to "
+                        "--n elements, both sides, one core")
     args = p.parse_args()
+    CLOCK["clock"] = args.clock
     if args.parallel:
         args.no_pin = True
         args.threads = len(os.sched_getaffinity(0))
+        CLOCK["clock"] = "wall"
     pin_to_one_core(args)
     repo = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
     exe = args.brdf_exe or build_brdf(repo, os.path.join(repo, args.target_dir))
+    if args.sizes:
+        return batch_sizes(exe, args)
 
     with tempfile.TemporaryDirectory() as tmp:
         raw = os.path.join(tmp, "directions.f32")
         soa = write_directions(raw, args.n, args.seed)
         kernels, versions = mitsuba_kernels(soa, args.variant, args.threads)
         print(f"# {versions}, n = {args.n}, rounds = {args.rounds}, "
-              f"cpus = {sorted(os.sched_getaffinity(0))}")
+              f"cpus = {sorted(os.sched_getaffinity(0))}, clock = {CLOCK['clock']}, "
+              f"load average = {os.getloadavg()}")
 
         # Warm: Mitsuba compiles and caches each kernel; brdf writes its values once.
         mi_values = {name: np.asarray(time_mitsuba(k)[1]) for name, k in kernels.items()}
         run_brdf(exe, raw, 1, out_dir=tmp)
         brdf_values = {}
-        for name in KERNELS + list(FAST) + ["ggx_d_plain"]:
+        for name in KERNELS + list(FAST) + ["ggx_d_plain"] + list(COSINES):
             path = os.path.join(tmp, f"{name}.f32")
             if os.path.exists(path):
                 brdf_values[name] = np.fromfile(path, dtype="<f4")
         for name, ours in brdf_values.items():
-            theirs = mi_values[FAST.get(name, "ggx_d" if name == "ggx_d_plain" else name)]
+            theirs = mi_values[{**FAST, **COSINES, "ggx_d_plain": "ggx_d"}.get(name, name)]
             theirs = theirs.astype(np.float64)
             ok = theirs > 0
             ratio = ours[ok] / theirs[ok]
             print(f"# values {name}: brdf / Mitsuba median {np.median(ratio):.6f}, "
                   f"range [{ratio.min():.4g}, {ratio.max():.4g}] over {ok.sum()} elements")
-        accuracy = measure_accuracy(soa, mi_values, brdf_values, args.check, args.seed)
+        # The errors do not depend on the thread count: --parallel skips them (at 10^7
+        # elements they take minutes).
+        accuracy = ({} if args.parallel else
+                    measure_accuracy(soa, mi_values, brdf_values, args.check, args.seed))
         material_err = {}
         path = os.path.join(tmp, "material_gltf.f32")
         if os.path.exists(path):
@@ -305,20 +344,24 @@ def main():
     print("|---|---|---|---|---|")
 
     def cell(ms, acc):
+        if acc is None:
+            return f"{ms:.2f} ms"
         return f"{ms:.2f} ms at {acc[0]:.3g} ULP (median {acc[1]:.2g})"
 
     for name in KERNELS:
         m, b = statistics.median(mi_ms[name]), med[name]
-        mi_acc = accuracy[("mitsuba", name)]
+        mi_acc = accuracy.get(("mitsuba", name))
         rows = [(LABELS[name], name)]
         if med.get(name + "_fast") is not None:
             rows.append((LABELS[name + "_fast"], name + "_fast"))
         if name == "ggx_d" and "ggx_d_plain" in med:
             rows.append(("GGX D in working precision (bench-local yardstick, not a brdf kernel)",
                          "ggx_d_plain"))
+        if name == "rough_conductor":
+            rows += [(LABELS[r], r) for r in COSINES if r in med and ("brdf", r) in accuracy]
         for label, row in rows:
             b = med[row]
-            print(f"| {label} | {cell(m, mi_acc)} | {cell(b, accuracy[('brdf', row)])} "
+            print(f"| {label} | {cell(m, mi_acc)} | {cell(b, accuracy.get(('brdf', row)))} "
                   f"| {b / m:.2f} | {b / copy:.2f} |")
     print(f"| copy (floor) | | {copy:.2f} ms | | 1.00 |")
 
@@ -368,6 +411,50 @@ def main():
         print(f"#   mitsuba {name}: {' '.join(f'{x:.2f}' for x in mi_ms[name])}")
     for name, v in brdf_ms.items():
         print(f"#   brdf {name}: {' '.join(f'{x:.2f}' for x in v)}")
+
+
+def batch_sizes(exe, args):
+    """ns per element of each kernel (exact and fast rows, and the copy) for batches of 10^3 up
+    to args.n elements, both sides, interleaved round by round, medians: where per-call costs
+    (Mitsuba's tracing and kernel launch, brdf's none) give way to arithmetic, and that to the
+    memory floor."""
+    sizes = []
+    n = 1000
+    while n <= args.n:
+        sizes.append(n)
+        n *= 10
+    names = KERNELS + list(FAST)
+    print(f"\n| kernel: ns per element (Mitsuba 3 / brdf f32x8) | "
+          + " | ".join(f"{s:.0e}" for s in sizes) + " |")
+    print("|---|" + "---|" * len(sizes))
+    cells = {name: [] for name in names + ["copy"]}
+    for size in sizes:
+        with tempfile.TemporaryDirectory() as tmp:
+            raw = os.path.join(tmp, "directions.f32")
+            soa = write_directions(raw, size, args.seed)
+            kernels, _ = mitsuba_kernels(soa, args.variant, args.threads)
+            for k in kernels.values():
+                time_mitsuba(k)
+            # Small batches take microseconds: many repetitions per round.
+            reps = max(1, min(200, 10_000_000 // (size * 10)))
+            mi = {name: [] for name in KERNELS}
+            br = {}
+            for _ in range(args.rounds):
+                for name in KERNELS:
+                    mi[name].append(min(time_mitsuba(kernels[name])[0] for _ in range(reps)))
+                for name, ms in run_brdf(exe, raw, reps, only=names + ["copy"]).items():
+                    br.setdefault(name, []).append(min(ms))
+            for name in names + ["copy"]:
+                b = statistics.median(br[name]) * 1e6 / size
+                if name == "copy":
+                    cells[name].append(f"- / {b:.2f}")
+                    continue
+                m = statistics.median(mi[FAST.get(name, name)]) * 1e6 / size
+                cells[name].append(f"{m:.2f} / {b:.2f}")
+    for name in names + ["copy"]:
+        print(f"| {LABELS.get(name, 'copy (floor)')} | " + " | ".join(cells[name]) + " |")
+    print("\n(each cell: the median over the rounds of the fastest of several repetitions "
+          f"per round; clock = {CLOCK['clock']})")
 
 
 if __name__ == "__main__":

@@ -453,6 +453,7 @@ pub const CONSTRUCTORS: &[(&str, &str)] = &[
     ("frame::Frame", "from_normal"),
     ("lights::SpotCone", "new"),
     ("material::MetallicRoughness", "new"),
+    ("layers::layered::Layered", "new"),
     ("diffuse::Lambert", "new"),
     ("diffuse::OrenNayar", "new"),
     ("diffuse::OrenNayarFull", "new"),
@@ -799,6 +800,8 @@ use brdf::frame::{self, Frame};
 use brdf::ggx::{self, Ggx};
 use brdf::ibl::{dfg, energy, irradiance, prefilter};
 use brdf::iridescence::{self, ThinFilm};
+use brdf::layers::layered::Layered;
+use brdf::layers::{anisotropy, clearcoat, sheen, specular};
 use brdf::material::{self, DiffuseCoupling, MetallicRoughness};
 use brdf::microfacet::{self, Microfacet};
 use brdf::rough_dielectric::{self, Transport};
@@ -1548,6 +1551,24 @@ pub static KERNELS: &[Kernel] = &[
          alpha: ALPHA, eta_r: ETA, eta_g: ETA, eta_b: ETA, k_r: KAPPA, k_g: KAPPA, k_b: KAPPA]
             -> [f_r: Domain::NONNEG, f_g: Domain::NONNEG, f_b: Domain::NONNEG],
         o3(cook_torrance::ggx_conductor_rgb_fast(cosines(n_dot_v, n_dot_l, n_dot_h, v_dot_h), Alpha(alpha), ComplexIor { eta: v3(eta_r, eta_g, eta_b), k: v3(k_r, k_g, k_b) }))
+    ),
+    kernel!(
+        "cook_torrance::ggx_conductor_local",
+        "Rough conductor, GGX, one channel, from the directions (D from h's components), Walter \
+         et al. 2007; Born and Wolf 14.2",
+        [wo_x: Domain::DIR, wo_y: Domain::DIR, wo_z: Domain::DIR,
+         wi_x: Domain::DIR, wi_y: Domain::DIR, wi_z: Domain::DIR, alpha: ALPHA, eta: ETA, k: KAPPA]
+            -> [f: Domain::NONNEG],
+        [cook_torrance::ggx_conductor_local(v3(wo_x, wo_y, wo_z), v3(wi_x, wi_y, wi_z), Alpha(alpha), eta, k)]
+    ),
+    kernel!(
+        "cook_torrance::ggx_conductor_local_fast",
+        "Rough conductor, GGX, one channel, from the directions, working precision, Walter et \
+         al. 2007; Born and Wolf 14.2",
+        [wo_x: Domain::DIR, wo_y: Domain::DIR, wo_z: Domain::DIR,
+         wi_x: Domain::DIR, wi_y: Domain::DIR, wi_z: Domain::DIR, alpha: ALPHA, eta: ETA, k: KAPPA]
+            -> [f: Domain::NONNEG],
+        [cook_torrance::ggx_conductor_local_fast(v3(wo_x, wo_y, wo_z), v3(wi_x, wi_y, wi_z), Alpha(alpha), eta, k)]
     ),
     kernel!(
         "cook_torrance::ggx_schlick_rgb",
@@ -3325,5 +3346,237 @@ pub static KERNELS: &[Kernel] = &[
             -> [linear_r: Domain::NONNEG_INF, linear_g: Domain::NONNEG_INF,
                 linear_b: Domain::NONNEG_INF],
         o3(color::srgb_eotf_rgb(v3(c_r, c_g, c_b)))
+    ),
+    // ---------------------------------------------------------------- layers::sheen
+    kernel!(
+        "layers::sheen::d_charlie",
+        "Charlie sheen NDF (2 + 1/alpha) sin^(1/alpha) / (2 pi), Estevez and Kulla 2017 eq. 2",
+        [n_dot_h: Domain::COS, alpha: Domain::UNIT] -> [d: Domain::NONNEG],
+        [sheen::d_charlie(n_dot_h, alpha)]
+    ),
+    kernel!(
+        "layers::sheen::lambda_charlie",
+        "Charlie sheen's fitted Smith Lambda, Estevez and Kulla 2017 section 3",
+        [n_dot_v: Domain::COS, alpha: Domain::UNIT] -> [lambda: Domain::NONNEG],
+        [sheen::lambda_charlie(n_dot_v, alpha)]
+    ),
+    kernel!(
+        "layers::sheen::v_charlie",
+        "Charlie sheen visibility 1 / ((1 + Lambda_v + Lambda_l) 4 NoV NoL), Estevez and Kulla \
+         2017",
+        [n_dot_v: Domain::COS, n_dot_l: Domain::COS, alpha: Domain::UNIT] -> [v: Domain::NONNEG],
+        [sheen::v_charlie(n_dot_v, n_dot_l, alpha)]
+    ),
+    kernel!(
+        "layers::sheen::v_neubelt",
+        "Cloth visibility 1 / (4 (NoL + NoV - NoL NoV)), Neubelt and Pettineo 2013",
+        [n_dot_v: Domain::COS, n_dot_l: Domain::COS] -> [v: Domain::NONNEG],
+        [sheen::v_neubelt(n_dot_v, n_dot_l)]
+    ),
+    kernel!(
+        "layers::sheen::d_ashikhmin",
+        "Ashikhmin's velvet NDF, Ashikhmin and Premoze 2007",
+        [n_dot_h: Domain::COS, alpha: Domain::UNIT] -> [d: Domain::NONNEG],
+        [sheen::d_ashikhmin(n_dot_h, alpha)]
+    ),
+    kernel!(
+        "layers::sheen::charlie",
+        "glTF sheen lobe sheenColor D_charlie V_charlie, RGB, KHR_materials_sheen",
+        [n_dot_v: Domain::COS, n_dot_l: Domain::COS, n_dot_h: Domain::COS, v_dot_h: Domain::COS,
+         sheen_color_r: Domain::UNIT, sheen_color_g: Domain::UNIT, sheen_color_b: Domain::UNIT,
+         alpha: Domain::UNIT]
+            -> [f_r: Domain::NONNEG, f_g: Domain::NONNEG, f_b: Domain::NONNEG],
+        o3(sheen::charlie(
+            cosines(n_dot_v, n_dot_l, n_dot_h, v_dot_h),
+            v3(sheen_color_r, sheen_color_g, sheen_color_b),
+            alpha,
+        ))
+    ),
+    kernel!(
+        "layers::sheen::albedo",
+        "Sheen directional albedo from the built-in table, KHR_materials_sheen",
+        [n_dot_v: Domain::COS, alpha: Domain::UNIT] -> [e: Domain::UNIT],
+        [sheen::albedo(n_dot_v, alpha)]
+    ),
+    kernel!(
+        "layers::sheen::albedo_fit_materialx",
+        "MaterialX's rational fit of the Imageworks sheen albedo (Neubelt visibility)",
+        [n_dot_v: Domain::COS, alpha: Domain::UNIT] -> [e: Domain::UNIT],
+        [sheen::albedo_fit_materialx(n_dot_v, alpha)]
+    ),
+    kernel!(
+        "layers::sheen::albedo_fit_threejs",
+        "three.js's exponential fit of the sheen albedo (IBLSheenBRDF's DG)",
+        [n_dot_v: Domain::COS, roughness: Domain::UNIT] -> [e: Domain::UNIT],
+        [sheen::albedo_fit_threejs(n_dot_v, roughness)]
+    ),
+    kernel!(
+        "layers::sheen::albedo_scaling",
+        "Albedo scaling min(1 - max(c) E_v, 1 - max(c) E_l) of the layer below, \
+         KHR_materials_sheen",
+        [sheen_color_r: Domain::UNIT, sheen_color_g: Domain::UNIT, sheen_color_b: Domain::UNIT,
+         e_v: Domain::UNIT, e_l: Domain::UNIT] -> [s: Domain::UNIT],
+        [sheen::albedo_scaling(v3(sheen_color_r, sheen_color_g, sheen_color_b), e_v, e_l)]
+    ),
+    // ---------------------------------------------------------------- layers::clearcoat
+    kernel!(
+        "layers::clearcoat::fresnel",
+        "Clearcoat Schlick Fresnel 0.04 + 0.96 (1 - c)^5, KHR_materials_clearcoat",
+        [cos_theta: Domain::COS] -> [f: Domain::UNIT],
+        [clearcoat::fresnel(cos_theta)]
+    ),
+    kernel!(
+        "layers::clearcoat::v_kelemen",
+        "Kelemen's visibility 1 / (4 VoH^2), Kelemen and Szirmay-Kalos 2001",
+        [v_dot_h: Domain::COS] -> [v: Domain::NONNEG],
+        [clearcoat::v_kelemen(v_dot_h)]
+    ),
+    kernel!(
+        "layers::clearcoat::coat",
+        "Clearcoat lobe F(VoH) D V (exact Smith), F0 0.04, KHR_materials_clearcoat",
+        [n_dot_v: Domain::COS, n_dot_l: Domain::COS, n_dot_h: Domain::COS, v_dot_h: Domain::COS,
+         alpha: ALPHA] -> [f: Domain::NONNEG],
+        [clearcoat::coat(cosines(n_dot_v, n_dot_l, n_dot_h, v_dot_h), alpha)]
+    ),
+    kernel!(
+        "layers::clearcoat::coat_kelemen",
+        "Clearcoat lobe F(VoH) D V_kelemen, Filament section 4.9",
+        [n_dot_v: Domain::COS, n_dot_l: Domain::COS, n_dot_h: Domain::COS, v_dot_h: Domain::COS,
+         alpha: ALPHA] -> [f: Domain::NONNEG],
+        [clearcoat::coat_kelemen(cosines(n_dot_v, n_dot_l, n_dot_h, v_dot_h), alpha)]
+    ),
+    kernel!(
+        "layers::clearcoat::layer",
+        "Coat over base: clearcoat coat + (1 - clearcoat F) base, RGB, KHR_materials_clearcoat",
+        [base_r: Domain::NONNEG, base_g: Domain::NONNEG, base_b: Domain::NONNEG,
+         coat: Domain::NONNEG, clearcoat: Domain::UNIT, f_coat: Domain::UNIT]
+            -> [f_r: Domain::NONNEG_INF, f_g: Domain::NONNEG_INF, f_b: Domain::NONNEG_INF],
+        o3(clearcoat::layer(v3(base_r, base_g, base_b), coat, clearcoat, f_coat))
+    ),
+    // ---------------------------------------------------------------- layers::specular
+    kernel!(
+        "layers::specular::f0_from_ior",
+        "F0 ((ior - 1) / (ior + 1))^2, 1 for the special ior 0, KHR_materials_ior",
+        [ior: Domain::closed(0.0, f64::INFINITY, "0 or [1, MAX]")] -> [f0: Domain::UNIT],
+        where [Constraint::Holds {
+            text: "ior = 0 or ior >= 1",
+            args: &["ior"],
+            check: |v| {
+                let x = v.get("ior");
+                (x == 0.0 || x >= 1.0) && x <= v.max
+            },
+        }],
+        [specular::f0_from_ior(ior)]
+    ),
+    kernel!(
+        "layers::specular::dielectric_f0",
+        "Dielectric F0 min(F0_ior color, 1) specular, RGB, KHR_materials_specular",
+        [f0_ior: Domain::UNIT, specular: Domain::UNIT, specular_color_r: Domain::NONNEG,
+         specular_color_g: Domain::NONNEG, specular_color_b: Domain::NONNEG]
+            -> [f0_r: Domain::UNIT, f0_g: Domain::UNIT, f0_b: Domain::UNIT],
+        o3(specular::dielectric_f0(
+            f0_ior,
+            specular,
+            v3(specular_color_r, specular_color_g, specular_color_b),
+        ))
+    ),
+    // ---------------------------------------------------------------- layers::anisotropy
+    kernel!(
+        "layers::anisotropy::alpha_t",
+        "Tangent alpha mix(alpha, 1, strength^2), KHR_materials_anisotropy",
+        [alpha: Domain::UNIT, strength: Domain::UNIT] -> [alpha_t: Domain::UNIT],
+        [anisotropy::alpha_t(alpha, strength)]
+    ),
+    kernel!(
+        "layers::anisotropy::direction",
+        "Anisotropy direction: normalized (x, y) rotated by rotation, KHR_materials_anisotropy",
+        [x: Domain::FINITE, y: Domain::FINITE, rotation: Domain::FINITE]
+            -> [out_x: Domain::DIR_OUT, out_y: Domain::DIR_OUT, out_z: Domain::DIR_OUT],
+        o3(anisotropy::direction(x, y, rotation))
+    ),
+    kernel!(
+        "layers::anisotropy::bent_reflection",
+        "Bent reflection vector for anisotropic IBL, Khronos sample viewer; Filament 5.3.9",
+        [n_x: Domain::DIR, n_y: Domain::DIR, n_z: Domain::DIR,
+         v_x: Domain::DIR, v_y: Domain::DIR, v_z: Domain::DIR,
+         b_x: Domain::DIR, b_y: Domain::DIR, b_z: Domain::DIR,
+         strength: Domain::UNIT, roughness: Domain::UNIT]
+            -> [r_x: Domain::DIR_OUT, r_y: Domain::DIR_OUT, r_z: Domain::DIR_OUT],
+        o3(anisotropy::bent_reflection(
+            v3(n_x, n_y, n_z),
+            v3(v_x, v_y, v_z),
+            v3(b_x, b_y, b_z),
+            strength,
+            roughness,
+        ))
+    ),
+    // ---------------------------------------------------------------- layers::layered
+    kernel!(
+        "layers::layered::Layered::eval",
+        "Layered glTF material (sheen, clearcoat, anisotropy over metallic-roughness), RGB",
+        [base_color_r: Domain::UNIT, base_color_g: Domain::UNIT, base_color_b: Domain::UNIT,
+         metallic: Domain::UNIT, roughness: Domain::UNIT,
+         wo_x: Domain::DIR, wo_y: Domain::DIR, wo_z: Domain::DIR,
+         wi_x: Domain::DIR, wi_y: Domain::DIR, wi_z: Domain::DIR]
+            -> [f_r: Domain::NONNEG, f_g: Domain::NONNEG, f_b: Domain::NONNEG],
+        built(
+            Layered::new(
+                v3(base_color_r, base_color_g, base_color_b),
+                metallic,
+                roughness,
+            ),
+            |m| o3(m.eval(v3(wo_x, wo_y, wo_z), v3(wi_x, wi_y, wi_z))),
+        )
+    ),
+    kernel!(
+        "layers::layered::Layered::lobe_probabilities",
+        "Lobe-selection probabilities (coat, specular, cosine) of the layered material",
+        [base_color_r: Domain::UNIT, base_color_g: Domain::UNIT, base_color_b: Domain::UNIT,
+         metallic: Domain::UNIT, roughness: Domain::UNIT,
+         wo_x: Domain::DIR, wo_y: Domain::DIR, wo_z: Domain::DIR]
+            -> [p_coat: Domain::UNIT, p_spec: Domain::UNIT, p_cos: Domain::UNIT],
+        built(
+            Layered::new(
+                v3(base_color_r, base_color_g, base_color_b),
+                metallic,
+                roughness,
+            ),
+            |m| o3(m.lobe_probabilities(v3(wo_x, wo_y, wo_z))),
+        )
+    ),
+    kernel!(
+        "layers::layered::Layered::pdf",
+        "One-sample mixture pdf of the layered material, Heitz 2018",
+        [base_color_r: Domain::UNIT, base_color_g: Domain::UNIT, base_color_b: Domain::UNIT,
+         metallic: Domain::UNIT, roughness: Domain::UNIT,
+         wo_x: Domain::DIR, wo_y: Domain::DIR, wo_z: Domain::DIR,
+         wi_x: Domain::DIR, wi_y: Domain::DIR, wi_z: Domain::DIR]
+            -> [pdf: Domain::NONNEG],
+        built(
+            Layered::new(
+                v3(base_color_r, base_color_g, base_color_b),
+                metallic,
+                roughness,
+            ),
+            |m| [m.pdf(v3(wo_x, wo_y, wo_z), v3(wi_x, wi_y, wi_z))],
+        )
+    ),
+    kernel!(
+        "layers::layered::Layered::sample",
+        "Layered material sample by lobe selection, with its pdf, Heitz 2018",
+        [base_color_r: Domain::UNIT, base_color_g: Domain::UNIT, base_color_b: Domain::UNIT,
+         metallic: Domain::UNIT, roughness: Domain::UNIT,
+         wo_x: Domain::DIR, wo_y: Domain::DIR, wo_z: Domain::DIR, u1: Domain::SAMPLE,
+         u2: Domain::SAMPLE]
+            -> [wi_x: Domain::DIR_OUT, wi_y: Domain::DIR_OUT, wi_z: Domain::DIR_OUT,
+                pdf: Domain::NONNEG],
+        built(
+            Layered::new(
+                v3(base_color_r, base_color_g, base_color_b),
+                metallic,
+                roughness,
+            ),
+            |m| o4(m.sample(v3(wo_x, wo_y, wo_z), u1, u2)),
+        )
     ),
 ];

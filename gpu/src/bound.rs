@@ -15,6 +15,7 @@
 //! | `log`, `log2` | absolute 2^-21 for x in [0.5, 2], else 3 + 0.5 | endpoints |
 //! | `pow(x, y)` | `exp2(y * log2(x))`, each step as above | |
 //! | `sin`, `cos` | absolute 2^-11 for x in [-pi, pi] (no promise outside) + 0.5 | Lipschitz 1 |
+//! | `asin` | `atan2(x, sqrt(1 - x * x))`: the steps as above, then 4096 + 0.5 | corners of the arguments' box |
 //! | `fma(a, b, c)` | `a * b + c`, two roundings as above | |
 //! | `min`, `max`, `clamp`, `saturate`, `abs`, negation | none (exact) | exact interval arithmetic |
 //!
@@ -320,15 +321,21 @@ impl<'m> Interp<'m> {
                 } else {
                     (*reject, *accept)
                 };
-                let c = self.num(fr, chosen);
-                if stable {
-                    Val::Num(c)
-                } else {
-                    let o = self.num(fr, other);
-                    Val::Num(Num {
-                        v: c.v,
-                        e: c.e.max((o.v - c.v).abs() + o.e),
-                    })
+                // Vectors select as a whole (a scalar condition): component by component.
+                let union = |c: Num, o: Num| Num {
+                    v: c.v,
+                    e: c.e.max((o.v - c.v).abs() + o.e),
+                };
+                match (self.expr(fr, chosen), stable) {
+                    (c, true) => c,
+                    (Val::Num(c), false) => Val::Num(union(c, self.num(fr, other))),
+                    (Val::Vec(c), false) => match self.expr(fr, other) {
+                        Val::Vec(o) => {
+                            Val::Vec(c.iter().zip(&o).map(|(&c, &o)| union(c, o)).collect())
+                        }
+                        x => panic!("select between a vector and {x:?}"),
+                    },
+                    (x, _) => panic!("select of {x:?} is not modelled"),
                 }
             }
             Expression::Math {
@@ -566,6 +573,7 @@ impl<'m> Interp<'m> {
                     e: x.e + f64::powi(2.0, -11) + allow(v, x.e, EXTRA),
                 }
             }
+            M::Asin => self.asin(x),
             other => panic!("builtin {other:?} is not modelled"),
         }
     }
@@ -597,6 +605,32 @@ impl<'m> Interp<'m> {
         Num {
             v: r.v,
             e: r.e + abs,
+        }
+    }
+
+    /// asin(x), inherited from `atan2(x, sqrt(1.0 - x * x))`: the product, the difference and
+    /// the square root as above, then atan2's own 4096 ULP over the interval its arguments'
+    /// errors span (atan2(y, s) is monotone in each argument for s >= 0: its corners bound
+    /// it).
+    fn asin(&mut self, x: Num) -> Num {
+        if x.v.abs() > 1.0 {
+            self.exclude("asin of a value outside [-1, 1]");
+            return Num { v: 0.0, e: 0.0 };
+        }
+        let one = Num { v: 1.0, e: 0.0 };
+        let d = add(one, neg(mul(x, x)));
+        let s = self.sqrt(d);
+        let v = x.v.asin();
+        let s_lo = (s.v - s.e).max(0.0);
+        let mut e: f64 = 0.0;
+        for y in [x.v - x.e, x.v + x.e] {
+            for t in [s_lo, s.v + s.e] {
+                e = e.max((y.atan2(t) - v).abs());
+            }
+        }
+        Num {
+            v,
+            e: e + allow(v, e, 4096.0 + EXTRA),
         }
     }
 
@@ -643,6 +677,10 @@ fn add_in(a: Num, b: Num, span: f64) -> Num {
     }
 }
 
+fn neg(a: Num) -> Num {
+    Num { v: -a.v, e: a.e }
+}
+
 fn mul(a: Num, b: Num) -> Num {
     let v = a.v * b.v;
     let e = a.v.abs() * b.e + b.v.abs() * a.e + a.e * b.e;
@@ -686,5 +724,22 @@ mod tests {
         let r = Interp::new(&m).run("f", &[1.0]).unwrap();
         assert_eq!(r[0].v, 10.0);
         assert!(r[0].e >= 10.0);
+    }
+
+    #[test]
+    fn asin_carries_atan2s_allowance_and_its_arguments_errors() {
+        let m = module("fn f(x: f32) -> f32 { return asin(x); }");
+        let mut i = Interp::new(&m);
+        let r = i.run("f", &[0.5]).unwrap();
+        assert!((r[0].v - 0.5f64.asin()).abs() < 1e-15);
+        // At least atan2's 4096 ULP of the result, and not wildly more at x = 1/2, where
+        // sqrt(1 - x^2) is well conditioned.
+        let ulp = ulp32(r[0].v);
+        assert!(
+            r[0].e >= 4096.0 * ulp && r[0].e < 4200.0 * ulp,
+            "{}",
+            r[0].e / ulp
+        );
+        assert!(i.run("f", &[1.5]).is_err());
     }
 }

@@ -334,14 +334,13 @@ pub fn markdown(adapter: &str, figs: &[Figures], without: &[&str]) -> String {
         }
     }
     s += &format!(
-        "\nKernels of the reference table without a WGSL twin ({}):\n\n{}\n",
-        without.len(),
-        without
-            .iter()
-            .map(|p| format!("`{p}`"))
-            .collect::<Vec<_>>()
-            .join(", ")
+        "\nKernels of the reference table without a WGSL twin ({}), with the reason:\n\n",
+        without.len()
     );
+    for p in without {
+        let why = crate::shaders::no_twin_reason(p).unwrap_or("no reason recorded");
+        s += &format!("- `{p}`: {why}\n");
+    }
     s
 }
 

@@ -17,6 +17,21 @@ pub fn wgsl_name(path: &str) -> String {
     path.replace("::", "_")
 }
 
+/// Argument names of the table that WGSL reserves (W3C WGSL, "Reserved Words"): their twins'
+/// parameters take a trailing underscore.
+pub const WGSL_RESERVED: &[&str] = &["operator", "smooth", "filter", "sample", "module"];
+
+/// The WGSL parameter name of a kernel's argument: the name itself, or with a trailing
+/// underscore where WGSL reserves it (`operator_`).
+#[must_use]
+pub fn wgsl_param(name: &str) -> String {
+    if WGSL_RESERVED.contains(&name) {
+        format!("{name}_")
+    } else {
+        name.to_string()
+    }
+}
+
 /// One family's WGSL, parsed and validated after `COMMON` and the families it needs.
 pub struct Family {
     /// The family's name (`ggx`, `fresnel`, ...).
@@ -128,7 +143,7 @@ pub fn signature_mismatches(families: &[Family]) -> Vec<String> {
                 .iter()
                 .map(|a| a.name.as_deref().unwrap_or("?"))
                 .collect();
-            let want: Vec<&str> = k.args.iter().map(|a| a.name).collect();
+            let want: Vec<String> = k.args.iter().map(|a| wgsl_param(a.name)).collect();
             if params != want {
                 out.push(format!(
                     "{name}: parameters ({}) but {} takes ({})",
@@ -293,4 +308,119 @@ pub fn translate(module: &Module, info: &ModuleInfo) -> Result<Translations, Str
         hlsl: hlsl_src,
         msl: msl_src,
     })
+}
+
+/// The modules of the kernels a shader calls, whose every kernel must have a WGSL twin or a
+/// reason in [`NO_TWIN`]: Fresnel, GGX and Beckmann, Cook-Torrance, the diffuse lobes, the
+/// Phong family, the metallic-roughness material, the punctual lights, the tonemappers and
+/// the colour transfer functions.
+pub const TWINNED_MODULES: &[&str] = &[
+    "fresnel",
+    "ggx",
+    "beckmann",
+    "cook_torrance",
+    "diffuse",
+    "phong",
+    "material",
+    "lights",
+    "tonemap",
+    "color",
+    "microfacet",
+];
+
+/// Kernels without a WGSL twin, each with the reason: an exact path, or a path prefix ending
+/// in `::` for a whole module.
+pub const NO_TWIN: &[(&str, &str)] = &[
+    (
+        "vec3::",
+        "vector algebra WGSL has built in (dot, cross, length, normalize, min, max, abs)",
+    ),
+    (
+        "frame::Frame::",
+        "a tangent frame of its normal: shaders build theirs from the mesh's tangents",
+    ),
+    (
+        "fresnel::average_dielectric",
+        "a numerical integral evaluated in f64 only; fresnel_average_dielectric_fit is its \
+         shader form",
+    ),
+    (
+        "tonemap::ev100_from_camera",
+        "camera exposure from f64 settings, computed once on the CPU, not per pixel",
+    ),
+    (
+        "diffuse::eon_cltc_sample",
+        "a sampler: the samplers have no twins yet",
+    ),
+    (
+        "diffuse::eon_cltc_pdf",
+        "a sampler's pdf: with the samplers",
+    ),
+    (
+        "diffuse::eon_sample",
+        "a sampler: the samplers have no twins yet",
+    ),
+    ("diffuse::eon_pdf", "a sampler's pdf: with the samplers"),
+    (
+        "diffuse::Eon::sample",
+        "a sampler: the samplers have no twins yet",
+    ),
+    ("diffuse::Eon::pdf", "a sampler's pdf: with the samplers"),
+    (
+        "material::MetallicRoughness::pdf",
+        "a sampler's pdf: with the samplers",
+    ),
+    (
+        "material::MetallicRoughness::sample",
+        "a sampler: the samplers have no twins yet",
+    ),
+    (
+        "material::MetallicRoughness::sample_weighted",
+        "a sampler: the samplers have no twins yet",
+    ),
+    (
+        "sampling::",
+        "not written yet: the Beckmann samplers (erf_inv) and the reflection samplers with \
+         their weights (the cosine-hemisphere, GGX D cos and GGX visible-normal samplers and \
+         the pdfs have twins)",
+    ),
+    (
+        "engine::Convention::",
+        "not written yet: each engine's shader has its own source, which this table of \
+         conventions reproduces on the CPU",
+    ),
+    (
+        "ibl::prefilter::",
+        "precomputation of prefiltered environment maps, run once per map, not per pixel",
+    ),
+    (
+        "ibl::energy::",
+        "energy-compensation tables and their fits: not written yet (a shader reads them from \
+         a texture)",
+    ),
+    (
+        "ibl::irradiance::",
+        "not written yet: spherical-harmonics projection and evaluation",
+    ),
+];
+
+/// Why `path` has no WGSL twin, from [`NO_TWIN`].
+#[must_use]
+pub fn no_twin_reason(path: &str) -> Option<&'static str> {
+    NO_TWIN
+        .iter()
+        .find(|(p, _)| {
+            if p.ends_with("::") {
+                path.starts_with(p)
+            } else {
+                path == *p
+            }
+        })
+        .map(|(_, why)| *why)
+}
+
+/// The module of a kernel's path (`ggx` for `ggx::Ggx::d`, `ibl` for `ibl::dfg::karis`).
+#[must_use]
+pub fn module_of(path: &str) -> &str {
+    path.split("::").next().unwrap_or(path)
 }

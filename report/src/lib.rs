@@ -15,6 +15,7 @@
 #[macro_use]
 mod md;
 mod energy;
+pub mod pictures;
 mod plot;
 mod sections;
 mod stability;
@@ -31,24 +32,37 @@ use tradeoff::{Budget, Measured};
 struct Args {
     quick: bool,
     out: PathBuf,
+    env: Option<PathBuf>,
+    docs: bool,
+    pictures: bool,
 }
 
 fn args() -> Result<Args, String> {
     let mut a = Args {
         quick: false,
         out: PathBuf::from("out/report"),
+        env: None,
+        docs: false,
+        pictures: false,
     };
     let mut it = std::env::args().skip(1);
     while let Some(x) = it.next() {
         match x.as_str() {
             "--quick" => a.quick = true,
             "--out" => a.out = it.next().ok_or("--out needs a folder")?.into(),
+            "--env" => a.env = Some(it.next().ok_or("--env needs a .hdr file")?.into()),
+            "--docs" => a.docs = true,
+            "--pictures" => a.pictures = true,
             "-h" | "--help" => {
                 println!(
                     "brdf-report: the crate's report.\n\n\
-                     Usage: cargo run --release -p brdf-report -- [--quick] [--out DIR]\n\n\
-                     --quick    fewer points, rounds and grid cells (seconds; what CI runs)\n\
-                     --out DIR  the folder to write (default out/report)"
+                     Usage: cargo run --release -p brdf-report -- [--quick] [--out DIR] [--env FILE.hdr] [--docs]\n\n\
+                     --quick         fewer points, rounds and grid cells (seconds; what CI runs)\n\
+                     --out DIR       the folder to write (default out/report)\n\
+                     --env FILE.hdr  light the renders with a Radiance equirectangular file\n\
+                     --pictures      only the renders and plots that need no measurement\n\
+                     --docs          also rewrite the README's pictures under docs/ (material\n\
+                     \x20               chart, Pareto plot and its data, docs/pareto.csv)"
                 );
                 std::process::exit(0);
             }
@@ -366,8 +380,8 @@ fn tonemap_curves(dir: &Path) -> Result<String, Box<dyn Error>> {
     plot::curves(
         &dir.join(&name),
         "Tonemapping operators on a grey ramp",
-        "scene-linear input (log scale)",
-        "sRGB-encoded display value",
+        "scene-linear input, relative to diffuse white (log scale)",
+        "display value, sRGB-encoded (0 = black, 1 = white)",
         true,
         (0.0, 1.0),
         &series,
@@ -375,27 +389,31 @@ fn tonemap_curves(dir: &Path) -> Result<String, Box<dyn Error>> {
     Ok(name)
 }
 
-fn spheres(dir: &Path) -> Result<String, Box<dyn Error>> {
-    let img = checks::render_spheres();
-    let name = "spheres.png".to_string();
-    plot::labelled_grid(
-        &dir.join(&name),
-        "GGX Cook-Torrance spheres on f32x8 lanes (ACES Hill, sRGB)",
-        &img.px,
-        img.w,
-        img.h,
-        checks::SPHERE_ROUGHNESS.len(),
-        2,
-        &checks::SPHERE_ROUGHNESS
-            .iter()
-            .map(|r| format!("roughness {r}"))
-            .collect::<Vec<_>>(),
-        &[
-            "dielectric, eta 1.5, over red Lambert".to_string(),
-            "gold (conductor)".to_string(),
-        ],
-    )?;
-    Ok(name)
+/// `--pictures`: the renders and the plots that need no measurement, and a report.md that
+/// holds only them.
+fn pictures_only(a: &Args, t0: Instant) -> Result<(), Box<dyn Error>> {
+    let files = stage("pictures", t0, || {
+        let opt = pictures::Options {
+            env: a.env.clone(),
+            quick: a.quick,
+        };
+        let mut f = pictures::write_all(&a.out, &opt)?;
+        f.push(tonemap_curves(&a.out)?);
+        Ok::<_, Box<dyn Error>>(f)
+    })?;
+    if a.docs {
+        let docs = Path::new(env!("CARGO_MANIFEST_DIR")).join("../docs");
+        pictures::docs_material_chart(&docs.join("material_chart.png"))?;
+    }
+    let text = md::take();
+    md::write_folder(&text, &a.out)?;
+    println!(
+        "Pictures written to {}: {}. Total {:.1} s.",
+        a.out.display(),
+        files.join(", "),
+        t0.elapsed().as_secs_f64()
+    );
+    Ok(())
 }
 
 /// The whole job: parse the command line, measure, write the folder, print the summary.
@@ -440,6 +458,9 @@ pub fn run() -> Result<(), Box<dyn Error>> {
          weak furnace, tonemapping, diffuse and Phong lobes, the material furnace, lights, \
          image-based lighting, the WGSL twins on GPUs). Every table has its CSV beside this file.\n"
     );
+    if a.pictures {
+        return pictures_only(&a, t0);
+    }
     let fams = tradeoff::families();
     let mut measured = stage("error of every form", t0, || {
         fams.iter()
@@ -472,6 +493,13 @@ pub fn run() -> Result<(), Box<dyn Error>> {
         "max relative error of the f32 result",
         &points,
     )?;
+    if a.docs {
+        let docs = Path::new(env!("CARGO_MANIFEST_DIR")).join("../docs");
+        std::fs::write(docs.join("pareto.csv"), pictures::pareto_csv(&points))?;
+        pictures::docs_pareto(&points, &docs.join("pareto.png"))?;
+        pictures::docs_material_chart(&docs.join("material_chart.png"))?;
+        eprintln!("wrote docs/pareto.csv, docs/pareto.png and docs/material_chart.png");
+    }
     let cap = if a.quick { 2_000 } else { 20_000 };
     let rows = stage("stability on extreme inputs", t0, || stability::run(cap));
     let (bad_kernels, bad_outputs, lane_kernels) = stability_section(&rows, cap);
@@ -502,13 +530,16 @@ pub fn run() -> Result<(), Box<dyn Error>> {
             Ok(())
         },
     )?;
-    stage("images", t0, || -> Result<(), Box<dyn Error>> {
-        outln!("\n## Images\n");
-        let s = spheres(&a.out)?;
-        outln!("![Spheres]({s})\n");
+    stage("pictures", t0, || -> Result<(), Box<dyn Error>> {
+        let opt = pictures::Options {
+            env: a.env.clone(),
+            quick: a.quick,
+        };
+        images.extend(pictures::write_all(&a.out, &opt)?);
         let c = tonemap_curves(&a.out)?;
-        outln!("![Tonemap curves]({c})\n");
-        images.push(s);
+        outln!(
+            "The tone curves: each operator on a grey ramp, sRGB-encoded.\n\n![Tonemap curves]({c})\n"
+        );
         images.push(c);
         Ok(())
     })?;

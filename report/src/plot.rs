@@ -1586,17 +1586,62 @@ pub fn heatmap(
 // Curves
 // ---------------------------------------------------------------------------------------------
 
+/// One curve of a [`lines`] chart.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Series {
+    /// Legend label.
+    pub name: String,
+    /// The points, drawn in the given order.
+    pub pts: Vec<(f64, f64)>,
+    /// RGB colour; `None` takes the series' place in the 22-colour palette.
+    pub color: Option<(u8, u8, u8)>,
+    /// Dashed instead of solid.
+    pub dashed: bool,
+}
+
+impl Series {
+    /// A solid series in its palette colour.
+    pub fn new(name: impl Into<String>, pts: Vec<(f64, f64)>) -> Self {
+        Self {
+            name: name.into(),
+            pts,
+            color: None,
+            dashed: false,
+        }
+    }
+
+    /// The same series in `color`, dashed or solid.
+    #[must_use]
+    pub fn styled(self, color: (u8, u8, u8), dashed: bool) -> Self {
+        Self {
+            color: Some(color),
+            dashed,
+            ..self
+        }
+    }
+}
+
+/// The frame of a [`lines`] chart: texts and axis kinds.
+#[derive(Debug, Clone, Copy)]
+pub struct LinePlot<'a> {
+    /// Title above the plot.
+    pub title: &'a str,
+    /// x axis title, with its unit.
+    pub x_label: &'a str,
+    /// y axis title, with its unit.
+    pub y_label: &'a str,
+    /// Base-10 logarithmic x axis (points with x <= 0 skipped).
+    pub log_x: bool,
+    /// Base-10 logarithmic y axis (points with y <= 0 skipped).
+    pub log_y: bool,
+    /// The y range; an empty, reversed or non-finite range falls back to the data's range
+    /// (plus 5 % on a linear axis).
+    pub y_range: (f64, f64),
+}
+
 /// Writes a line chart of `series` (each a legend label and its `(x, y)` points, drawn in the
-/// given order) as a 1400 x 900 PNG at `path`.
-///
-/// The x axis spans the data (base-10 logarithmic with decade ticks when `log_x`, in which case
-/// points with `x <= 0` are skipped); the y axis spans `y_range` (linear; an empty, reversed or
-/// non-finite range falls back to the data's range plus 5 %). Lines are clipped to the plot and
-/// broken at non-finite points. Series `i` takes colour `i` of a 22-colour palette; series past
-/// the 22nd are dashed. When there are more than 10 series every series also carries markers
-/// (a shape per series, about 8 per curve, staggered), so each one stays distinguishable. A
-/// single-point series is drawn as a marker. The legend is a side panel right of the plot.
-/// Calls [`register_fonts`] itself.
+/// given order) as a 1400 x 900 PNG at `path`: [`lines`] with palette colours, a linear y axis
+/// over `y_range` and an x axis logarithmic when `log_x`.
 pub fn curves(
     path: &Path,
     title: &str,
@@ -1606,6 +1651,43 @@ pub fn curves(
     y_range: (f64, f64),
     series: &[(String, Vec<(f64, f64)>)],
 ) -> Result<(), Box<dyn Error>> {
+    let series: Vec<Series> = series
+        .iter()
+        .map(|(n, p)| Series::new(n.clone(), p.clone()))
+        .collect();
+    lines(
+        path,
+        &LinePlot {
+            title,
+            x_label,
+            y_label,
+            log_x,
+            log_y: false,
+            y_range,
+        },
+        &series,
+    )
+}
+
+/// Writes a line chart of `series` as a 1400 x 900 PNG at `path`.
+///
+/// The x axis spans the data (base-10 logarithmic with decade ticks when `plot.log_x`, in which
+/// case points with `x <= 0` are skipped); the y axis spans `plot.y_range` (logarithmic when
+/// `plot.log_y`; an empty, reversed or non-finite range falls back to the data's range). Lines
+/// are clipped to the plot and broken at non-finite points. A series without a colour takes
+/// colour `i` of a 22-colour palette; palette series past the 22nd are dashed. When there are
+/// more than 10 series every series also carries markers (a shape per series, about 8 per
+/// curve, staggered), so each one stays distinguishable. A single-point series is drawn as a
+/// marker. The legend is a side panel right of the plot. Calls [`register_fonts`] itself.
+pub fn lines(path: &Path, plot: &LinePlot, series: &[Series]) -> Result<(), Box<dyn Error>> {
+    let LinePlot {
+        title,
+        x_label,
+        y_label,
+        log_x,
+        log_y,
+        y_range,
+    } = *plot;
     fonts_ready()?;
     const W: i32 = 1400;
     const H: i32 = 900;
@@ -1614,9 +1696,9 @@ pub fn curves(
 
         let (mut xlo, mut xhi) = (f64::INFINITY, f64::NEG_INFINITY);
         let (mut ylo, mut yhi) = (f64::INFINITY, f64::NEG_INFINITY);
-        for (_, pts) in series {
-            for &(x, y) in pts {
-                if x.is_finite() && (!log_x || x > 0.0) && y.is_finite() {
+        for s in series {
+            for &(x, y) in &s.pts {
+                if x.is_finite() && (!log_x || x > 0.0) && y.is_finite() && (!log_y || y > 0.0) {
                     xlo = xlo.min(x);
                     xhi = xhi.max(x);
                     ylo = ylo.min(y);
@@ -1629,13 +1711,19 @@ pub fn curves(
         } else {
             Axis::new(1.0, 10.0, log_x)
         };
-        let ya = if y_range.0.is_finite() && y_range.1.is_finite() && y_range.0 < y_range.1 {
-            Axis::new(y_range.0, y_range.1, false)
+        let ya = if y_range.0.is_finite()
+            && y_range.1.is_finite()
+            && y_range.0 < y_range.1
+            && (!log_y || y_range.0 > 0.0)
+        {
+            Axis::new(y_range.0, y_range.1, log_y)
+        } else if ylo <= yhi && log_y {
+            Axis::new(ylo, yhi, true)
         } else if ylo <= yhi {
             let pad = 0.05 * (yhi - ylo);
             Axis::new(ylo - pad, yhi + pad, false)
         } else {
-            Axis::new(0.0, 1.0, false)
+            Axis::new(0.0, 1.0, log_y)
         };
 
         // Legend panel geometry.
@@ -1651,8 +1739,8 @@ pub fn curves(
         let leg_tf = Tf::new((f64::from(row_h) * 0.64).clamp(9.0, 15.0), TEXT);
         let sample_w = 34;
         let mut lw = 0;
-        for (name, _) in series {
-            lw = lw.max(width(root, name, &leg_tf)?);
+        for s in series {
+            lw = lw.max(width(root, &s.name, &leg_tf)?);
         }
         let panel_w = (sample_w + 10 + lw + 24).clamp(160, 420);
         let label_max = panel_w - sample_w - 10 - 24;
@@ -1669,9 +1757,18 @@ pub fn curves(
         draw_axes(root, &frame, x_label, y_label)?;
 
         let with_markers = n > 10;
-        let dashed = |i: usize| (i / PALETTE.len()) % 2 == 1;
-        for (i, (_, pts)) in series.iter().enumerate() {
-            let c = palette(i);
+        let dashed = |i: usize| match series[i].color {
+            Some(_) => series[i].dashed,
+            None => series[i].dashed || (i / PALETTE.len()) % 2 == 1,
+        };
+        let colour = |i: usize| {
+            series[i]
+                .color
+                .map_or_else(|| palette(i), |(r, g, b)| RGBColor(r, g, b))
+        };
+        for (i, s) in series.iter().enumerate() {
+            let pts = &s.pts;
+            let c = colour(i);
             let st = style(c, 2, false);
             polyline(
                 root,
@@ -1719,9 +1816,10 @@ pub fn curves(
             let more = format!("… and {} more", n - listed);
             put(root, &more, (lx0 + 8, y), &leg_tf, Ha::Left, Va::Center)?;
         }
-        for (i, (name, _)) in series.iter().enumerate().take(listed) {
+        for (i, s) in series.iter().enumerate().take(listed) {
+            let name = &s.name;
             let y = ly0 + 6 + i as i32 * row_h + row_h / 2;
-            let c = palette(i);
+            let c = colour(i);
             let (sx0, sx1) = (lx0 + 8, lx0 + 8 + sample_w);
             if dashed(i) {
                 root.draw(&DashedPathElement::new(
@@ -1811,6 +1909,17 @@ pub fn labelled_grid(
         let l = col_labels.get(c).map(String::as_str).unwrap_or("");
         col_lines.push(wrap(&scratch, l, &lab_tf, col_w)?);
     }
+    // When some column labels wrap, break the one-line ones at their last space too, so that
+    // every column reads the same way ("roughness" above its value).
+    if col_lines.iter().any(|l| l.len() > 1) {
+        for lines in &mut col_lines {
+            if let [one] = lines.as_slice()
+                && let Some((a, b)) = one.rsplit_once(' ')
+            {
+                *lines = vec![a.to_string(), b.to_string()];
+            }
+        }
+    }
     let mut row_lines: Vec<Vec<String>> = Vec::new();
     let mut row_w = 0;
     for r in 0..rows {
@@ -1864,6 +1973,76 @@ pub fn labelled_grid(
             for (j, l) in lines.iter().enumerate() {
                 let y = yc + ((2 * j as i32 - (n - 1)) * lab_tf.line()) / 2;
                 put(root, l, (ix0 - 12, y), &lab_tf, Ha::Right, Va::Center)?;
+            }
+        }
+        Ok(())
+    })
+}
+
+// ---------------------------------------------------------------------------------------------
+// Captioned cells
+// ---------------------------------------------------------------------------------------------
+
+/// Writes equal-sized RGB8 images (`cell_w` x `cell_h` pixels each, row-major, 3 bytes a pixel)
+/// as a grid of `cols` columns at `path`, each with its caption centred below it, under
+/// `title`.
+///
+/// Captions wrap at spaces to the cell's width. Errors if there are no cells, `cols` is 0, a
+/// dimension is zero or a cell's buffer is not `cell_w * cell_h * 3` bytes. Calls
+/// [`register_fonts`] itself.
+pub fn captioned_cells(
+    path: &Path,
+    title: &str,
+    cells: &[(Vec<u8>, String)],
+    (cell_w, cell_h): (usize, usize),
+    cols: usize,
+) -> Result<(), Box<dyn Error>> {
+    fonts_ready()?;
+    if cells.is_empty() || cols == 0 || cell_w == 0 || cell_h == 0 {
+        return Err("captioned_cells: no cells, or a zero dimension".into());
+    }
+    if let Some((c, _)) = cells.iter().find(|(c, _)| c.len() != cell_w * cell_h * 3) {
+        return Err(format!(
+            "captioned_cells: a cell has {} bytes, {cell_w} x {cell_h} RGB8 needs {}",
+            c.len(),
+            cell_w * cell_h * 3
+        )
+        .into());
+    }
+    let (cw, chh) = (i32::try_from(cell_w)?, i32::try_from(cell_h)?);
+    let rows = cells.len().div_ceil(cols);
+    let lab_tf = Tf::new(16.0, TEXT);
+    let mut measure_buf = vec![0u8; 3 * 4 * 4];
+    let scratch = BitMapBackend::with_buffer(&mut measure_buf, (4, 4)).into_drawing_area();
+    let mut captions = Vec::new();
+    for (_, c) in cells {
+        captions.push(wrap(&scratch, c, &lab_tf, cw)?);
+    }
+    drop(scratch);
+    let cap_lines = captions.iter().map(Vec::len).max().unwrap_or(1) as i32;
+    let (margin, gap) = (20, 12);
+    let title_h = if title.is_empty() { margin } else { 56 };
+    let row_h = chh + 6 + cap_lines * lab_tf.line() + gap;
+    let w = 2 * margin + cols as i32 * cw + (cols as i32 - 1) * gap;
+    let h = title_h + rows as i32 * row_h + margin - gap;
+    save(path, (w as u32, h as u32), |root| {
+        root.fill(&WHITE)?;
+        if !title.is_empty() {
+            title_text(root, title, w)?;
+        }
+        for (k, ((rgb, _), lines)) in cells.iter().zip(&captions).enumerate() {
+            let (r, c) = ((k / cols) as i32, (k % cols) as i32);
+            let (x0, y0) = (margin + c * (cw + gap), title_h + r * row_h);
+            let img = BitMapElement::<(i32, i32)>::with_ref(
+                (x0, y0),
+                (cell_w as u32, cell_h as u32),
+                rgb.as_slice(),
+            )
+            .ok_or("captioned_cells: image buffer too small")?;
+            root.draw(&img)?;
+            for (j, l) in lines.iter().enumerate() {
+                let y = y0 + chh + 6 + j as i32 * lab_tf.line();
+                put(root, l, (x0 + cw / 2, y), &lab_tf, Ha::Center, Va::Top)?;
             }
         }
         Ok(())

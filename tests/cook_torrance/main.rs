@@ -4,6 +4,7 @@
 //!
 //! - `energy`: energy and reciprocity, by the public integrators
 //! - `fast_tier`: the working-precision rough conductor against the exact tier
+//! - `local`: the rough conductor from the directions, both tiers, against the f64 route
 //! - `rgb`: the Fresnel-specific dot-product forms against the generic assembly
 
 #[path = "../common/mod.rs"]
@@ -11,4 +12,5 @@ mod common;
 
 mod energy;
 mod fast_tier;
+mod local;
 mod rgb;

@@ -219,7 +219,268 @@ fn table<T: Real>() -> Vec<Kernel<T>> {
     ibl_rows(&mut t);
     #[cfg(feature = "engine")]
     engine_rows(&mut t);
+    #[cfg(feature = "sheen")]
+    sheen_rows(&mut t);
+    #[cfg(feature = "clearcoat")]
+    clearcoat_rows(&mut t);
+    #[cfg(feature = "specular")]
+    specular_rows(&mut t);
+    #[cfg(feature = "anisotropy")]
+    anisotropy_rows(&mut t);
+    #[cfg(feature = "layered")]
+    layered_rows(&mut t);
     t
+}
+
+/// `layers::layered::Layered`: a plain base, and every layer at once.
+#[cfg(feature = "layered")]
+fn layered_rows<T: Real>(t: &mut Vec<Kernel<T>>) {
+    use brdf::layers::layered::Layered;
+    let s = T::splat;
+    let plain = Layered::new(V3::new(s(0.9), s(0.6), s(0.3)), s(0.5), s(0.5)).unwrap();
+    let all = plain
+        .with_sheen(V3::new(s(0.8), s(0.4), s(0.2)), s(0.5))
+        .and_then(|m| m.with_clearcoat(s(0.8), s(0.2)))
+        .and_then(|m| m.with_clearcoat_normal(V3::new(s(0.0), s(0.6), s(0.8))))
+        .and_then(|m| m.with_anisotropy(s(0.7), s(0.4)))
+        .unwrap()
+        .with_compensation(true);
+    for (label, m) in [("plain", plain), ("all layers", all)] {
+        let dirs = || [v("wo", WO), v("wi", WI)].concat();
+        t.push(k(
+            &format!("Layered::eval({label})"),
+            vec![dirs()],
+            move |x| o3(m.eval(v3(x, 0), v3(x, 3))),
+        ));
+        t.push(k(
+            &format!("Layered::lobe_probabilities({label})"),
+            vec![v("wo", WO)],
+            move |x| o3(m.lobe_probabilities(v3(x, 0))),
+        ));
+        t.push(k(
+            &format!("Layered::pdf({label})"),
+            vec![dirs()],
+            move |x| vec![m.pdf(v3(x, 0), v3(x, 3))],
+        ));
+        t.push(k(
+            &format!("Layered::sample({label})"),
+            vec![v("wo", WO), c("u1", 0.3), c("u2", 0.6)],
+            move |x| o4(m.sample(v3(x, 0), x[3], x[4])),
+        ));
+        // World space: a shading point of normal n and view v.
+        let n_v = || [v("n", [0.0, 0.6, 0.8]), v("v", WO)].concat();
+        let sp = |x: &[T]| brdf::ShadingPoint::new(v3(x, 0), v3(x, 3));
+        t.push(k(
+            &format!("Layered::eval_world({label})"),
+            vec![n_v(), v("l", WI)],
+            move |x| o3(m.eval_world(&sp(x), v3(x, 6))),
+        ));
+        t.push(k(
+            &format!("Layered::pdf_world({label})"),
+            vec![n_v(), v("l", WI)],
+            move |x| vec![m.pdf_world(&sp(x), v3(x, 6))],
+        ));
+        t.push(k(
+            &format!("Layered::sample_world({label})"),
+            vec![n_v(), c("u1", 0.3), c("u2", 0.6)],
+            move |x| o4(m.sample_world(&sp(x), x[6], x[7])),
+        ));
+    }
+}
+
+/// `layers::clearcoat`.
+#[cfg(feature = "clearcoat")]
+fn clearcoat_rows<T: Real>(t: &mut Vec<Kernel<T>>) {
+    use brdf::layers::clearcoat::*;
+    let cos = || {
+        vec![
+            c("n_dot_v", NV),
+            c("n_dot_l", NL),
+            c("n_dot_h", NH),
+            c("v_dot_h", VH),
+        ]
+    };
+    let cs = |x: &[T]| Cosines {
+        n_dot_v: x[0],
+        n_dot_l: x[1],
+        n_dot_h: x[2],
+        v_dot_h: x[3],
+    };
+    t.push(k(
+        "layers::clearcoat::fresnel",
+        vec![c("cos_theta", VH)],
+        |x| vec![fresnel(x[0])],
+    ));
+    t.push(k(
+        "layers::clearcoat::v_kelemen",
+        vec![c("v_dot_h", VH)],
+        |x| vec![v_kelemen(x[0])],
+    ));
+    t.push(k(
+        "layers::clearcoat::coat",
+        [cos(), vec![p("alpha", 0.1, &ALPHA_BAD)]].concat(),
+        move |x| vec![coat(cs(x), x[4])],
+    ));
+    t.push(k(
+        "layers::clearcoat::coat_kelemen",
+        [cos(), vec![p("alpha", 0.1, &ALPHA_BAD)]].concat(),
+        move |x| vec![coat_kelemen(cs(x), x[4])],
+    ));
+    t.push(
+        k(
+            "layers::clearcoat::layer",
+            vec![
+                rgb("base", [0.3, 0.2, 0.1], &[]),
+                c("coat", 0.5),
+                p("clearcoat", 0.7, &UNIT_BAD),
+                p("f_coat", 0.1, &UNIT_BAD),
+            ],
+            |x| o3(layer(v3(x, 0), x[3], x[4], x[5])),
+        )
+        .dep("base.x", &[0])
+        .dep("base.y", &[1])
+        .dep("base.z", &[2]),
+    );
+}
+
+/// `layers::specular`.
+#[cfg(feature = "specular")]
+fn specular_rows<T: Real>(t: &mut Vec<Kernel<T>>) {
+    use brdf::layers::specular::*;
+    t.push(k(
+        "layers::specular::f0_from_ior",
+        vec![p("ior", 1.5, &[0.5, -1.0, INF, -INF])],
+        |x| vec![f0_from_ior(x[0])],
+    ));
+    t.push(
+        k(
+            "layers::specular::dielectric_f0",
+            vec![
+                p("f0_ior", 0.04, &UNIT_BAD),
+                p("specular", 0.7, &UNIT_BAD),
+                rgb("specular_color", [2.0, 1.0, 0.5], &NONNEG_BAD),
+            ],
+            |x| o3(dielectric_f0(x[0], x[1], v3(x, 2))),
+        )
+        .dep("specular_color.x", &[0])
+        .dep("specular_color.y", &[1])
+        .dep("specular_color.z", &[2]),
+    );
+}
+
+/// `layers::anisotropy`.
+#[cfg(feature = "anisotropy")]
+fn anisotropy_rows<T: Real>(t: &mut Vec<Kernel<T>>) {
+    use brdf::layers::anisotropy::*;
+    t.push(k(
+        "layers::anisotropy::alpha_t",
+        vec![p("alpha", 0.2, &UNIT_BAD), p("strength", 0.5, &UNIT_BAD)],
+        |x| vec![alpha_t(x[0], x[1])],
+    ));
+    t.push(k(
+        "layers::anisotropy::direction",
+        vec![
+            p("x", 0.6, &[INF, -INF]),
+            p("y", 0.8, &[INF, -INF]),
+            p("rotation", 0.3, &[INF, -INF]),
+        ],
+        |x| o3(direction(x[0], x[1], x[2])),
+    ));
+    t.push(k(
+        "layers::anisotropy::bent_reflection",
+        vec![
+            v("n", [0.0, 0.0, 1.0]),
+            v("v", WO),
+            v("b", [0.0, 1.0, 0.0]),
+            p("strength", 0.5, &UNIT_BAD),
+            p("roughness", 0.4, &UNIT_BAD),
+        ],
+        |x| o3(bent_reflection(v3(x, 0), v3(x, 3), v3(x, 6), x[9], x[10])),
+    ));
+}
+
+/// `layers::sheen`: alpha and the colours in [0, 1].
+#[cfg(feature = "sheen")]
+fn sheen_rows<T: Real>(t: &mut Vec<Kernel<T>>) {
+    use brdf::layers::sheen::*;
+    let a = || p("alpha", 0.3, &UNIT_BAD);
+    t.push(k(
+        "layers::sheen::d_charlie",
+        vec![c("n_dot_h", NH), a()],
+        |x| vec![d_charlie(x[0], x[1])],
+    ));
+    t.push(k(
+        "layers::sheen::lambda_charlie",
+        vec![c("n_dot_v", NV), a()],
+        |x| vec![lambda_charlie(x[0], x[1])],
+    ));
+    t.push(k(
+        "layers::sheen::v_charlie",
+        vec![c("n_dot_v", NV), c("n_dot_l", NL), a()],
+        |x| vec![v_charlie(x[0], x[1], x[2])],
+    ));
+    t.push(k(
+        "layers::sheen::v_neubelt",
+        vec![c("n_dot_v", NV), c("n_dot_l", NL)],
+        |x| vec![v_neubelt(x[0], x[1])],
+    ));
+    t.push(k(
+        "layers::sheen::d_ashikhmin",
+        vec![c("n_dot_h", NH), a()],
+        |x| vec![d_ashikhmin(x[0], x[1])],
+    ));
+    t.push(
+        k(
+            "layers::sheen::charlie",
+            vec![
+                c("n_dot_v", NV),
+                c("n_dot_l", NL),
+                c("n_dot_h", NH),
+                c("v_dot_h", VH),
+                rgb("sheen_color", [0.9, 0.5, 0.2], &UNIT_BAD),
+                a(),
+            ],
+            |x| {
+                o3(charlie(
+                    Cosines {
+                        n_dot_v: x[0],
+                        n_dot_l: x[1],
+                        n_dot_h: x[2],
+                        v_dot_h: x[3],
+                    },
+                    v3(x, 4),
+                    x[7],
+                ))
+            },
+        )
+        .dep("sheen_color.x", &[0])
+        .dep("sheen_color.y", &[1])
+        .dep("sheen_color.z", &[2]),
+    );
+    t.push(k(
+        "layers::sheen::albedo",
+        vec![c("n_dot_v", NV), a()],
+        |x| vec![albedo(x[0], x[1])],
+    ));
+    t.push(k(
+        "layers::sheen::albedo_fit_materialx",
+        vec![c("n_dot_v", NV), a()],
+        |x| vec![albedo_fit_materialx(x[0], x[1])],
+    ));
+    t.push(k(
+        "layers::sheen::albedo_fit_threejs",
+        vec![c("n_dot_v", NV), p("roughness", 0.4, &UNIT_BAD)],
+        |x| vec![albedo_fit_threejs(x[0], x[1])],
+    ));
+    t.push(k(
+        "layers::sheen::albedo_scaling",
+        vec![
+            rgb("sheen_color", [0.9, 0.5, 0.2], &UNIT_BAD),
+            p("e_v", 0.3, &UNIT_BAD),
+            p("e_l", 0.4, &UNIT_BAD),
+        ],
+        |x| vec![albedo_scaling(v3(x, 0), x[3], x[4])],
+    ));
 }
 
 /// `engine::Convention`'s methods, for each of the five conventions.
@@ -1107,6 +1368,44 @@ fn cook_torrance_rows<T: Real>(t: &mut Vec<Kernel<T>>) {
                     },
                     Alpha(x[4]),
                     x[5],
+                )]
+            },
+        ));
+        t.push(k(
+            "cook_torrance::ggx_conductor_local",
+            vec![
+                v("wo", WO),
+                v("wi", WI),
+                p("alpha", 0.3, &ALPHA_BAD),
+                p("eta", 0.2, &ETA_BAD),
+                p("k", 3.0, &NONNEG_BAD),
+            ],
+            |x| {
+                vec![ct::ggx_conductor_local(
+                    v3(x, 0),
+                    v3(x, 3),
+                    Alpha(x[6]),
+                    x[7],
+                    x[8],
+                )]
+            },
+        ));
+        t.push(k(
+            "cook_torrance::ggx_conductor_local_fast",
+            vec![
+                v("wo", WO),
+                v("wi", WI),
+                p("alpha", 0.3, &ALPHA_BAD),
+                p("eta", 0.2, &ETA_BAD),
+                p("k", 3.0, &NONNEG_BAD),
+            ],
+            |x| {
+                vec![ct::ggx_conductor_local_fast(
+                    v3(x, 0),
+                    v3(x, 3),
+                    Alpha(x[6]),
+                    x[7],
+                    x[8],
                 )]
             },
         ));
@@ -2818,6 +3117,28 @@ const NOT_KERNELS: &[(&str, &str)] = &[
     ("PhongDiffuseSpecular::kd", "getter"),
     ("PhongDiffuseSpecular::ks", "getter"),
     ("PhongDiffuseSpecular::exponent", "getter"),
+    (
+        "layers::sheen::albedo_estimate",
+        "f64 cubature of one table entry",
+    ),
+    (
+        "layers::sheen::albedo_table",
+        "table builder into a caller's buffer",
+    ),
+    ("Ior::value", "getter"),
+    ("Specular::factor", "getter"),
+    ("Specular::color", "getter"),
+    (
+        "Specular::dielectric_f0",
+        "validated form of layers::specular::dielectric_f0 (a row)",
+    ),
+    ("Specular::dielectric_f90", "getter"),
+    ("Layered::from_base", "constructor"),
+    ("Layered::with_sheen", "validating constructor"),
+    ("Layered::with_clearcoat", "validating constructor"),
+    ("Layered::with_clearcoat_normal", "validating constructor"),
+    ("Layered::with_anisotropy", "validating constructor"),
+    ("Layered::with_compensation", "constructor"),
     ("Transmission::factor", "getter"),
     ("Volume::thickness", "getter"),
     ("ThinFilm::thickness", "getter"),
@@ -2884,6 +3205,19 @@ const SOURCES: &[(&str, &str)] = &[
     ("tonemap", include_str!("../../src/tonemap/curves.rs")),
     ("tonemap", include_str!("../../src/tonemap/agx.rs")),
     ("vec3", include_str!("../../src/vec3.rs")),
+    ("layers::sheen", include_str!("../../src/layers/sheen.rs")),
+    (
+        "layers::clearcoat",
+        include_str!("../../src/layers/clearcoat.rs"),
+    ),
+    (
+        "layers::specular",
+        include_str!("../../src/layers/specular.rs"),
+    ),
+    (
+        "layers::anisotropy",
+        include_str!("../../src/layers/anisotropy.rs"),
+    ),
 ];
 
 /// Every public function of the sources, as `module::name` (free) or `Type::name` (method;

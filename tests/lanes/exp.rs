@@ -105,7 +105,9 @@ fn exp_ftz_is_exp_with_subnormal_results_flushed_on_every_127th_bit_pattern() {
 /// microcode assist. `exp_ftz` on f32x8 lanes, `beckmann::d_fast` on every lane type and
 /// `beckmann::d` and `fresnel::conductor` on `f32` and `f32x8` (evaluated in f64, their
 /// subnormal results made from normal ones) raise neither for normal inputs (and 0), across every 127th f32 bit pattern
-/// and a (cosine, alpha) grid with cosines from 2^-149 to 1. This is the only `unsafe` in the crate's tests: reading
+/// and a (cosine, alpha) grid with cosines from 2^-149 to 1, as does
+/// `cook_torrance::ggx_conductor_local` on `f32` and `f32x8` (with the `ggx` feature) for
+/// directions at those cosines. This is the only `unsafe` in the crate's tests: reading
 /// and clearing the flag register.
 #[cfg(all(target_arch = "x86_64", feature = "beckmann", feature = "fresnel"))]
 #[test]
@@ -196,6 +198,55 @@ fn normal_inputs_meet_no_subnormal_number() {
                 assert!(
                     !flagged(),
                     "f32 conductor({v:e}, {eta}, {k}) met a subnormal"
+                );
+            }
+            checked += 8;
+        }
+    }
+    // The rough conductor from directions at those cosines (the view at the cosine, the light
+    // at its mirror image about a tilted normal), F near 0 included.
+    #[cfg(feature = "ggx")]
+    for (eta, k) in iors {
+        use brdf::V3;
+        use brdf::cook_torrance::ggx_conductor_local;
+        use brdf::microfacet::Alpha;
+        for c in cosines.chunks(8) {
+            let dir = |l: usize, turn: f64| {
+                let z = c.get(l).copied().unwrap_or(0.5).max(2f64.powi(-120));
+                let s = ((1.0 - z) * (1.0 + z)).sqrt();
+                [(s * turn.cos()) as f32, (s * turn.sin()) as f32, z as f32]
+            };
+            let wo: [[f32; 3]; 8] = core::array::from_fn(|l| dir(l, 0.3));
+            let wi: [[f32; 3]; 8] = core::array::from_fn(|l| dir(7 - l, 2.9));
+            let v8 = |w: &[[f32; 3]; 8]| {
+                V3::new(
+                    f32x8::new(w.map(|d| d[0])),
+                    f32x8::new(w.map(|d| d[1])),
+                    f32x8::new(w.map(|d| d[2])),
+                )
+            };
+            clear();
+            let (o, i) = std::hint::black_box((v8(&wo), v8(&wi)));
+            let a = Alpha(f32x8::splat(0.3));
+            std::hint::black_box(ggx_conductor_local(
+                o,
+                i,
+                a,
+                f32x8::splat(eta),
+                f32x8::splat(k),
+            ));
+            assert!(
+                !flagged(),
+                "f32x8 ggx_conductor_local({eta}, {k}) met a subnormal"
+            );
+            for l in 0..8 {
+                let v3 = |d: [f32; 3]| V3::new(d[0], d[1], d[2]);
+                clear();
+                let (o, i) = std::hint::black_box((v3(wo[l]), v3(wi[l])));
+                std::hint::black_box(ggx_conductor_local(o, i, Alpha(0.3), eta, k));
+                assert!(
+                    !flagged(),
+                    "f32 ggx_conductor_local({o:?}, {i:?}, {eta}, {k}) met a subnormal"
                 );
             }
             checked += 8;

@@ -11,6 +11,8 @@ use brdf::ggx::{self, Ggx};
 use brdf::ibl::energy::{Albedo, AverageAlbedo, Reflectance};
 use brdf::ibl::{dfg, energy, irradiance, prefilter};
 use brdf::iridescence::{self, ThinFilm};
+use brdf::layers::layered::Layered;
+use brdf::layers::{anisotropy, clearcoat, sheen, specular};
 use brdf::material::{self, DiffuseCoupling, MetallicRoughness};
 use brdf::microfacet::Alpha;
 use brdf::microfacet::{self, Microfacet};
@@ -74,6 +76,11 @@ fn cosines<T: Scalar>(a: &[T], i: usize) -> Cosines<T> {
         n_dot_h: a[i + 2],
         v_dot_h: a[i + 3],
     }
+}
+
+/// The layered material of the table's constructor arguments at `a[0..5]`.
+fn layered<T: Scalar>(a: &[T]) -> Layered<T> {
+    Layered::new(v(a, 0), a[3], a[4]).expect("in-domain material")
 }
 
 fn three<T: Scalar>(w: V3<T>) -> Vec<T> {
@@ -280,6 +287,22 @@ pub fn direct<T: Scalar>(path: &str, a: &[T]) -> Option<Vec<T>> {
                 k: v(a, 8),
             },
         )),
+        "cook_torrance::ggx_conductor_local" => vec![cook_torrance::ggx_conductor_local(
+            v(a, 0),
+            v(a, 3),
+            Alpha(a[6]),
+            a[7],
+            a[8],
+        )],
+        "cook_torrance::ggx_conductor_local_fast" => {
+            vec![cook_torrance::ggx_conductor_local_fast(
+                v(a, 0),
+                v(a, 3),
+                Alpha(a[6]),
+                a[7],
+                a[8],
+            )]
+        }
         "cook_torrance::ggx_schlick_rgb" => three(cook_torrance::ggx_schlick_rgb(
             c(a, 0),
             Alpha(a[4]),
@@ -664,6 +687,38 @@ pub fn direct<T: Scalar>(path: &str, a: &[T]) -> Option<Vec<T>> {
             let (w, p, wt) = mr(a).sample_weighted(v(a, 5), a[8], a[9]);
             vec![w.x, w.y, w.z, p, wt.x, wt.y, wt.z]
         }
+        "layers::sheen::d_charlie" => vec![sheen::d_charlie(a[0], a[1])],
+        "layers::sheen::lambda_charlie" => vec![sheen::lambda_charlie(a[0], a[1])],
+        "layers::sheen::v_charlie" => vec![sheen::v_charlie(a[0], a[1], a[2])],
+        "layers::sheen::v_neubelt" => vec![sheen::v_neubelt(a[0], a[1])],
+        "layers::sheen::d_ashikhmin" => vec![sheen::d_ashikhmin(a[0], a[1])],
+        "layers::sheen::charlie" => three(sheen::charlie(c(a, 0), v(a, 4), a[7])),
+        "layers::sheen::albedo" => vec![sheen::albedo(a[0], a[1])],
+        "layers::sheen::albedo_fit_materialx" => vec![sheen::albedo_fit_materialx(a[0], a[1])],
+        "layers::sheen::albedo_fit_threejs" => vec![sheen::albedo_fit_threejs(a[0], a[1])],
+        "layers::sheen::albedo_scaling" => vec![sheen::albedo_scaling(v(a, 0), a[3], a[4])],
+        "layers::clearcoat::fresnel" => vec![clearcoat::fresnel(a[0])],
+        "layers::clearcoat::v_kelemen" => vec![clearcoat::v_kelemen(a[0])],
+        "layers::clearcoat::coat" => vec![clearcoat::coat(c(a, 0), a[4])],
+        "layers::clearcoat::coat_kelemen" => vec![clearcoat::coat_kelemen(c(a, 0), a[4])],
+        "layers::clearcoat::layer" => three(clearcoat::layer(v(a, 0), a[3], a[4], a[5])),
+        "layers::specular::f0_from_ior" => vec![specular::f0_from_ior(a[0])],
+        "layers::specular::dielectric_f0" => three(specular::dielectric_f0(a[0], a[1], v(a, 2))),
+        "layers::anisotropy::alpha_t" => vec![anisotropy::alpha_t(a[0], a[1])],
+        "layers::anisotropy::direction" => three(anisotropy::direction(a[0], a[1], a[2])),
+        "layers::anisotropy::bent_reflection" => three(anisotropy::bent_reflection(
+            v(a, 0),
+            v(a, 3),
+            v(a, 6),
+            a[9],
+            a[10],
+        )),
+        "layers::layered::Layered::eval" => three(layered(a).eval(v(a, 5), v(a, 8))),
+        "layers::layered::Layered::lobe_probabilities" => {
+            three(layered(a).lobe_probabilities(v(a, 5)))
+        }
+        "layers::layered::Layered::pdf" => vec![layered(a).pdf(v(a, 5), v(a, 8))],
+        "layers::layered::Layered::sample" => sample(layered(a).sample(v(a, 5), a[8], a[9])),
         "lights::radiance" => vec![lights::radiance(a[0], a[1], a[2])],
         "lights::radiance_pi" => vec![lights::radiance_pi(a[0], a[1], a[2])],
         "lights::radiance_pi_rgb" => three(lights::radiance_pi_rgb(v(a, 0), v(a, 3), a[6])),

@@ -964,4 +964,28 @@ const EXCLUDED: &[(&str, &str)] = &[
     ("vec3::V3::lane", "lane accessor"),
     ("vec3::V3::to_array", "accessor"),
     ("vec3::V3::to_lanes", "transpose to glam vectors"),
+    (
+        "layers::sheen::albedo_estimate",
+        "f64 cubature of one table entry",
+    ),
+    (
+        "layers::sheen::albedo_table",
+        "writes a table into a caller's buffer",
+    ),
+    (
+        "layers::specular::Specular::dielectric_f0",
+        "validated-parameter form of layers::specular::dielectric_f0, which is in the table",
+    ),
+    (
+        "layers::layered::Layered::eval_world",
+        "world-space wrapper: Layered::eval(sp.wo(), sp.local(l)), which is in the table",
+    ),
+    (
+        "layers::layered::Layered::pdf_world",
+        "world-space wrapper: Layered::pdf(sp.wo(), sp.local(l)), which is in the table",
+    ),
+    (
+        "layers::layered::Layered::sample_world",
+        "world-space wrapper: sp.world of Layered::sample(sp.wo(), u1, u2), which is in the table",
+    ),
 ];

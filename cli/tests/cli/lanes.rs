@@ -95,6 +95,16 @@ const POLYNOMIAL: &[(&str, u128)] = &[
     ("tonemap::Operator::apply", 2),
     ("ibl::dfg::mip_from_roughness_ue4", 2),
     ("ibl::dfg::roughness_from_mip_ue4", 2),
+    // exp and pow of the sheen lobes and fits.
+    ("layers::sheen::lambda_charlie", 2),
+    ("layers::sheen::v_charlie", 2),
+    ("layers::sheen::charlie", 2),
+    ("layers::sheen::d_ashikhmin", 2),
+    ("layers::sheen::albedo_fit_threejs", 2),
+    // sin and cos of the visible-normal and cosine samplers, as MetallicRoughness::sample.
+    ("layers::layered::Layered::sample", 128),
+    // sin and cos of the anisotropy rotation.
+    ("layers::anisotropy::direction", 4),
 ];
 
 /// A lane/scalar difference beyond the polynomials' few ULP: a library issue.

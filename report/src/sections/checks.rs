@@ -2,14 +2,12 @@
 //! against scalar, NDF normalization, Smith's weak furnace, the tonemapping table, the
 //! accuracy table, and the sphere renders.
 
-use brdf::cook_torrance;
-use brdf::frame::Frame;
 use brdf::ggx::Ggx;
 use brdf::integrate::{self, Config, Estimate};
 use brdf::microfacet::Microfacet;
 use brdf::tonemap::{AgxLook, Operator};
 use brdf::wide::f32x8;
-use brdf::{Real, V3, beckmann, color, fresnel};
+use brdf::{Real, V3, beckmann};
 use core::f64::consts::PI;
 
 /// `a . b` summed as glam's `DVec3::dot` sums it (three rounded products, two rounded sums);
@@ -174,112 +172,6 @@ pub fn op_name(op: &Operator) -> String {
             .unwrap_or("?")
             .to_string(),
     }
-}
-
-/// An 8-bit RGB image.
-pub struct Image {
-    /// Width in pixels.
-    pub w: usize,
-    /// Height in pixels.
-    pub h: usize,
-    /// RGB8, row by row.
-    pub px: Vec<u8>,
-}
-
-impl Image {
-    fn new(w: usize, h: usize, bg: [u8; 3]) -> Self {
-        Self {
-            w,
-            h,
-            px: bg.iter().copied().cycle().take(w * h * 3).collect(),
-        }
-    }
-    fn set(&mut self, x: usize, y: usize, c: [u8; 3]) {
-        if x < self.w && y < self.h {
-            let i = 3 * (y * self.w + x);
-            self.px[i..i + 3].copy_from_slice(&c);
-        }
-    }
-}
-
-fn quantize(x: f32) -> u8 {
-    (x.clamp(0.0, 1.0) * 255.0).round() as u8
-}
-
-/// The perceptual roughness of each column of [`render_spheres`].
-pub const SPHERE_ROUGHNESS: [f32; 6] = [0.05, 0.2, 0.4, 0.6, 0.8, 1.0];
-
-/// Cook-Torrance spheres on f32x8 lanes: 8 pixels per evaluation.
-pub fn render_spheres() -> Image {
-    const S: usize = 128;
-    let roughness = SPHERE_ROUGHNESS;
-    let mut img = Image::new(S * roughness.len(), 2 * S, [24, 24, 28]);
-    let light = V3::new(-0.45f32, 0.55, 0.7);
-    let light = light * light.length().recip();
-    let view = V3::new(0.0f32, 0.0, 1.0);
-    let splat = |v: V3<f32>| V3::new(f32x8::splat(v.x), f32x8::splat(v.y), f32x8::splat(v.z));
-    let (l_w, v_w) = (splat(light), splat(view));
-    let base = V3::new(f32x8::splat(0.6), f32x8::splat(0.08), f32x8::splat(0.05));
-    let gold_eta = V3::new(
-        f32x8::splat(0.143),
-        f32x8::splat(0.374),
-        f32x8::splat(1.442),
-    );
-    let gold_k = V3::new(
-        f32x8::splat(3.983),
-        f32x8::splat(2.385),
-        f32x8::splat(1.603),
-    );
-    let tonemap = Operator::AcesHill;
-    for (col, &r) in roughness.iter().enumerate() {
-        let alpha = brdf::microfacet::alpha_from_perceptual(f32x8::splat(r));
-        let Ok(dist) = Ggx::isotropic(alpha) else {
-            continue;
-        };
-        for row in 0..2 {
-            for py in 0..S {
-                for px0 in (0..S).step_by(8) {
-                    // Sphere normal at each of 8 pixels.
-                    let x = f32x8::from_fn(|i| ((px0 + i) as f32 + 0.5) / S as f32 * 2.0 - 1.0);
-                    let y = f32x8::splat(1.0 - (py as f32 + 0.5) / S as f32 * 2.0);
-                    let r2 = x * x + y * y;
-                    let inside = r2.simd_lt(f32x8::splat(0.92 * 0.92));
-                    let z = (f32x8::splat(0.92 * 0.92) - r2).sqrt_nonneg();
-                    let n = V3::new(x, y, z).normalize_or(V3::unit_z());
-                    let frame = Frame::from_normal(n);
-                    let (wo, wi) = (frame.to_local(v_w), frame.to_local(l_w));
-                    let n_dot_l = wi.z.max(f32x8::ZERO);
-                    let radiance = if row == 0 {
-                        // Dielectric coat over a red Lambertian base, diffuse weighted by 1 - F.
-                        let spec = cook_torrance::dielectric(&dist, wo, wi, f32x8::splat(1.5));
-                        let kd = f32x8::ONE - fresnel::dielectric(wo.z, f32x8::splat(1.5));
-                        let diffuse = base * (kd * f32x8::FRAC_1_PI);
-                        let f = diffuse + V3::splat(spec);
-                        f * (f32x8::splat(3.0) * n_dot_l) + base * f32x8::splat(0.03)
-                    } else {
-                        let f = cook_torrance::eval_rgb(&dist, wo, wi, |c| {
-                            fresnel::conductor_rgb(c, gold_eta, gold_k)
-                        });
-                        let ambient =
-                            fresnel::conductor_rgb(wo.z, gold_eta, gold_k) * f32x8::splat(0.05);
-                        f * (f32x8::splat(3.0) * n_dot_l) + ambient
-                    };
-                    let display = color::srgb_oetf_rgb(tonemap.apply(radiance));
-                    for i in 0..8 {
-                        if inside.lane(i) != 0.0 {
-                            let c = display.lane(i);
-                            img.set(
-                                col * S + px0 + i,
-                                row * S + py,
-                                [quantize(c.x), quantize(c.y), quantize(c.z)],
-                            );
-                        }
-                    }
-                }
-            }
-        }
-    }
-    img
 }
 
 /// The per-function ULP table against the correctly rounded MPFR oracle. Measuring it needs

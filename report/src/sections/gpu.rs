@@ -18,6 +18,8 @@ struct Snapshot {
     rows: Vec<Row>,
     /// The stable-form table's rows: (form, bit-identical, max ULP, where).
     ggx: Vec<[String; 4]>,
+    /// The kernels without a twin, each line "`path`: reason" as the snapshot lists them.
+    without: Vec<String>,
 }
 
 struct Row {
@@ -101,12 +103,26 @@ fn read(dir: &Path) -> Option<Snapshot> {
             }
         }
     }
+    // The kernels without a twin: the list after its heading, one "- `path`: reason" a line.
+    let without = md
+        .find("without a WGSL twin")
+        .map(|i| {
+            md[i..]
+                .lines()
+                .skip(1)
+                .skip_while(|l| l.trim().is_empty())
+                .take_while(|l| l.starts_with("- `"))
+                .map(|l| l.trim_start_matches("- ").to_string())
+                .collect()
+        })
+        .unwrap_or_default();
     Some(Snapshot {
         name: dir.file_name()?.to_string_lossy().into_owned(),
         adapter: line("Adapter:"),
         date,
         rows,
         ggx,
+        without,
     })
 }
 
@@ -214,5 +230,16 @@ pub fn gpu_section() {
         for [form, ident, ulp, at] in &s.ggx {
             outln!("| {} | {form} | {ident} | {ulp} | {at} |", s.name);
         }
+    }
+    let first = &snaps[0];
+    outln!(
+        "\nKernels of the reference table without a WGSL twin in the `{}` snapshot ({}), with \
+         the reason (`brdf_gpu::shaders::NO_TWIN`; the `coverage` test fails for a kernel of the \
+         shader families that has neither):\n",
+        first.name,
+        first.without.len()
+    );
+    for w in &first.without {
+        outln!("- {w}");
     }
 }

@@ -1,0 +1,181 @@
+//! The rough conductor from the directions (`ggx_conductor_local` and its working-precision
+//! tier): on f64 within its documented bound of the generic assembly `conductor` with `Ggx`
+//! (an independent route); on f32 within 1 ULP of the f64 tier on the same (f32) directions;
+//! the fast tier within its stated relative bound of the exact tier; lanes equal to scalars bit
+//! for bit.
+#![cfg(all(feature = "ggx", feature = "cook-torrance"))]
+
+use brdf::cook_torrance;
+use brdf::ggx::Ggx;
+use brdf::microfacet::Alpha;
+use brdf::wide::{f32x8, f64x4};
+use brdf::{Real, V3};
+
+use crate::common::Rng;
+
+/// Random unit directions above the horizon (cosines down to 1e-6 half the time), alpha
+/// log-uniform over [1e-3, 1], and (eta, k): a measured metal channel half the time,
+/// log-uniform over [1e-3, 1e3] otherwise, kept where k >= 0.1 or eta >= 1 (no critical
+/// angle, where one rounding of v.h moves F by more than any tier's error).
+fn inputs(n: usize) -> Vec<([f64; 6], [f64; 3])> {
+    let mut rng = Rng(0x10ca_1c0d);
+    let dir = |rng: &mut Rng| {
+        let z = if rng.next_f64() < 0.5 {
+            libm::pow(10.0, -6.0 * rng.next_f64())
+        } else {
+            rng.next_f64()
+        };
+        let phi = core::f64::consts::TAU * rng.next_f64();
+        let s = ((1.0 - z) * (1.0 + z)).sqrt();
+        [s * phi.cos(), s * phi.sin(), z]
+    };
+    let mut out = Vec::with_capacity(n);
+    while out.len() < n {
+        let (v, l) = (dir(&mut rng), dir(&mut rng));
+        let alpha = libm::pow(10.0, -3.0 * rng.next_f64());
+        let (eta, k) = if rng.next_f64() < 0.5 {
+            [(0.18, 3.42), (2.76, 3.84), (0.52, 4.84)][(rng.next_f64() * 3.0) as usize % 3]
+        } else {
+            (
+                libm::pow(10.0, 6.0 * rng.next_f64() - 3.0),
+                libm::pow(10.0, 6.0 * rng.next_f64() - 3.0),
+            )
+        };
+        if k >= 0.1 || eta >= 1.0 {
+            // The directions as f32 values, so that both precisions read the same numbers.
+            let d = [v[0], v[1], v[2], l[0], l[1], l[2]].map(|x| f64::from(x as f32));
+            out.push((d, [alpha, eta, k].map(|x| f64::from(x as f32))));
+        }
+    }
+    out
+}
+
+fn eval<T: Real>(d: [f64; 6], p: [f64; 3], fast: bool) -> T {
+    let s = |x: f64| T::splat(x);
+    let (wo, wi) = (
+        V3::new(s(d[0]), s(d[1]), s(d[2])),
+        V3::new(s(d[3]), s(d[4]), s(d[5])),
+    );
+    if fast {
+        cook_torrance::ggx_conductor_local_fast(wo, wi, Alpha(s(p[0])), s(p[1]), s(p[2]))
+    } else {
+        cook_torrance::ggx_conductor_local(wo, wi, Alpha(s(p[0])), s(p[1]), s(p[2]))
+    }
+}
+
+/// f32 ULP distance, with the spacing of f32 at |r| (subnormal spacing below 2^-126).
+fn ulp32(x: f32, r: f64) -> f64 {
+    let e = libm::floor(libm::log2(r.abs().max(f64::from(f32::MIN_POSITIVE))));
+    (f64::from(x) - r).abs() / libm::exp2(e - 23.0)
+}
+
+/// On f64 against the generic assembly `conductor` with `Ggx` (D of the normalized h in double
+/// words, V from the vectors' components, h from `half_vector`): an independent route that
+/// agrees where the directions are unit vectors to f64's precision, within the documented
+/// 1e-14 relative (the plain f64 D V carries about twenty roundings of 2^-53; F is the same
+/// kernel).
+#[test]
+fn local_f64_agrees_with_the_generic_assembly() {
+    let mut worst = 0.0f64;
+    for (d, p) in inputs(50_000) {
+        // Exactly unit (to f64 rounding) versions of the f32 directions.
+        let unit = |w: [f64; 3]| {
+            let n = (w[0] * w[0] + w[1] * w[1] + w[2] * w[2]).sqrt();
+            V3::new(w[0] / n, w[1] / n, w[2] / n)
+        };
+        let (wo, wi) = (unit([d[0], d[1], d[2]]), unit([d[3], d[4], d[5]]));
+        let m = Ggx::isotropic(p[0]).unwrap();
+        let want = cook_torrance::conductor(&m, wo, wi, p[1], p[2]);
+        let got = cook_torrance::ggx_conductor_local(wo, wi, Alpha(p[0]), p[1], p[2]);
+        if want.is_normal() && want < 1e300 {
+            worst = worst.max((got / want - 1.0).abs());
+        }
+    }
+    println!("ggx_conductor_local f64 against the generic assembly: max relative {worst:.3e}");
+    assert!(worst <= 1e-14, "{worst:e}");
+}
+
+/// The f32 result (the formulas evaluated in f64 and rounded once) against the f64 tier on the
+/// same directions, whose own error is below 1e-14 relative: 1 ULP, as documented (0.5 for the
+/// rounding, the rest for the f64 tier's error).
+#[test]
+fn local_f32_within_one_ulp_of_the_f64_tier() {
+    let mut worst = 0.0f64;
+    for (d, p) in inputs(200_000) {
+        let got = eval::<f32>(d, p, false);
+        let want = eval::<f64>(d, p, false);
+        if want > f64::from(f32::MAX) {
+            assert_eq!(got, f32::MAX, "{d:?} {p:?}");
+            continue;
+        }
+        let u = ulp32(got, want);
+        assert!(u <= 1.0, "{u} ULP at {d:?} {p:?}: {got:e} vs {want:e}");
+        worst = worst.max(u);
+    }
+    println!("ggx_conductor_local f32 against f64: max {worst:.3} ULP");
+}
+
+/// The working-precision tier's relative error against the exact tier in f32 and f64 where the
+/// exact value is a normal number, D V below the cap, and both cosines at least 1e-3 (the
+/// documented bounds: 2e-6 in f32, 4e-15 in f64).
+#[test]
+fn local_fast_within_its_bound_of_the_exact_tier() {
+    let mut worst = [0.0f64; 2];
+    for (d, p) in inputs(200_000) {
+        if d[2].min(d[5]) < 1e-3 {
+            continue;
+        }
+        let (f, e) = (eval::<f32>(d, p, true), eval::<f32>(d, p, false));
+        if e.is_normal() && e < 1e30 {
+            worst[0] = worst[0].max((f64::from(f) / f64::from(e) - 1.0).abs());
+        }
+        let (f, e) = (eval::<f64>(d, p, true), eval::<f64>(d, p, false));
+        if e.is_normal() && e < 1e300 {
+            worst[1] = worst[1].max((f / e - 1.0).abs());
+        }
+    }
+    println!(
+        "ggx_conductor_local_fast: max relative error {:.3e} (f32), {:.3e} (f64)",
+        worst[0], worst[1]
+    );
+    assert!(worst[0] <= 2e-6 && worst[1] <= 4e-15, "{worst:?}");
+}
+
+#[test]
+fn local_lanes_equal_scalars_bit_for_bit() {
+    let all = inputs(4_000);
+    for fast in [false, true] {
+        for chunk in all.chunks_exact(8) {
+            let d8 = |j: usize| f32x8::new(core::array::from_fn(|i| chunk[i].0[j] as f32));
+            let p8 = |j: usize| f32x8::new(core::array::from_fn(|i| chunk[i].1[j] as f32));
+            let (wo, wi) = (V3::new(d8(0), d8(1), d8(2)), V3::new(d8(3), d8(4), d8(5)));
+            let out = if fast {
+                cook_torrance::ggx_conductor_local_fast(wo, wi, Alpha(p8(0)), p8(1), p8(2))
+            } else {
+                cook_torrance::ggx_conductor_local(wo, wi, Alpha(p8(0)), p8(1), p8(2))
+            };
+            for (i, (d, p)) in chunk.iter().enumerate() {
+                assert_eq!(
+                    out.to_array()[i].to_bits(),
+                    eval::<f32>(*d, *p, fast).to_bits()
+                );
+            }
+        }
+        for chunk in all.chunks_exact(4) {
+            let d4 = |j: usize| f64x4::new(core::array::from_fn(|i| chunk[i].0[j]));
+            let p4 = |j: usize| f64x4::new(core::array::from_fn(|i| chunk[i].1[j]));
+            let (wo, wi) = (V3::new(d4(0), d4(1), d4(2)), V3::new(d4(3), d4(4), d4(5)));
+            let out = if fast {
+                cook_torrance::ggx_conductor_local_fast(wo, wi, Alpha(p4(0)), p4(1), p4(2))
+            } else {
+                cook_torrance::ggx_conductor_local(wo, wi, Alpha(p4(0)), p4(1), p4(2))
+            };
+            for (i, (d, p)) in chunk.iter().enumerate() {
+                assert_eq!(
+                    out.to_array()[i].to_bits(),
+                    eval::<f64>(*d, *p, fast).to_bits()
+                );
+            }
+        }
+    }
+}

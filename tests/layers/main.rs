@@ -1,0 +1,23 @@
+//! The glTF extension lobes (`brdf::layers`). One test binary for the family:
+//! `cargo test --test layers` runs it, `cargo test --test layers <module>::` one module. Each
+//! module keeps its own feature gate.
+//!
+//! - `sheen`: normalization, reciprocity, energy, extremes, lanes against scalars
+//! - `sheen_albedo`: the built-in table and the published fits against the integrators
+//! - `sheen_engines`: against transcriptions of the Khronos sample viewer and three.js
+//! - `clearcoat`: clearcoat 0 is the base, reciprocity, energy, Kelemen's error, the viewer
+//! - `specular`: KHR_materials_ior / specular against the metallic-roughness material
+//! - `anisotropy`: strength 0 is isotropic, direction, bent reflection against the viewer
+//! - `layered`: the layered material: zero layers, furnace, energy, per-lobe compensation,
+//!   reciprocity, sampler chi-square, extremes and lanes
+
+#[path = "../common/mod.rs"]
+mod common;
+
+mod anisotropy;
+mod clearcoat;
+mod layered;
+mod sheen;
+mod sheen_albedo;
+mod sheen_engines;
+mod specular;
