@@ -794,48 +794,6 @@ fn over_arrays<L: Lanes, const NA: usize, const NO: usize>(
     true
 }
 
-#[cfg(test)]
-mod arrays_tests {
-    use super::{KERNELS, find};
-    use brdf::Real;
-    use brdf::wide::f32x8;
-
-    #[test]
-    #[allow(clippy::cast_precision_loss)]
-    fn arrays_equal_the_lane_entry_per_element_and_refuse_wrong_lengths() {
-        // Eleven elements: one full group of eight and a partial one, an argument broadcast,
-        // and an invalid alpha in element 3, which must not turn its group's other lanes NaN.
-        let k = find("ggx::Ggx::d").expect("row");
-        let n = 11;
-        let ax: Vec<f32> = (0..n)
-            .map(|i| if i == 3 { -1.0 } else { 0.05 * (i + 1) as f32 })
-            .collect();
-        let mz: Vec<f32> = (0..n).map(|i| 1.0 - 0.08 * i as f32).collect();
-        let ins: [&[f32]; 5] = [&ax, &[0.3], &[0.0], &[0.0], &mz];
-        let mut d = vec![0.0f32; n];
-        assert!((k.f32_arrays)(&ins, &mut [&mut d], n));
-        for i in 0..n {
-            let row = [ax[i], 0.3, 0.0, 0.0, mz[i]].map(f32x8::splat);
-            let mut y = [f32x8::splat(0.0)];
-            (k.f32x8)(&row, &mut y);
-            let (got, want) = (d[i], y[0].lane(0));
-            assert!(
-                got.to_bits() == want.to_bits() || (got.is_nan() && want.is_nan()),
-                "{i}"
-            );
-            assert_eq!(got.is_nan(), i == 3, "{i}");
-        }
-        // Wrong counts or lengths: false, nothing written.
-        let mut d = vec![7.0f32; n];
-        assert!(!(k.f32_arrays)(&ins[..4], &mut [&mut d], n));
-        assert!(!(k.f32_arrays)(&ins, &mut [&mut d], n + 1));
-        let short = [&ax[..5], &[0.3][..], &[0.0][..], &[0.0][..], &mz[..]];
-        assert!(!(k.f32_arrays)(&short, &mut [&mut d], n));
-        assert!(d.iter().all(|&v| v == 7.0));
-        assert!(KERNELS.iter().all(|k| !(k.f64_arrays)(&[], &mut [], 0)));
-    }
-}
-
 /// Lane 0 of `x` as an `f64` (exact): the value of an argument that is one `f64` per call.
 fn f64_of<T: Real>(x: T) -> f64 {
     x.lane(0).into()
@@ -3322,3 +3280,45 @@ pub static KERNELS: &[Kernel] = &[
         o3(color::srgb_eotf_rgb(v3(c_r, c_g, c_b)))
     ),
 ];
+
+#[cfg(test)]
+mod arrays_tests {
+    use super::{KERNELS, find};
+    use brdf::Real;
+    use brdf::wide::f32x8;
+
+    #[test]
+    #[allow(clippy::cast_precision_loss)]
+    fn arrays_equal_the_lane_entry_per_element_and_refuse_wrong_lengths() {
+        // Eleven elements: one full group of eight and a partial one, an argument broadcast,
+        // and an invalid alpha in element 3, which must not turn its group's other lanes NaN.
+        let k = find("ggx::Ggx::d").expect("row");
+        let n = 11;
+        let ax: Vec<f32> = (0..n)
+            .map(|i| if i == 3 { -1.0 } else { 0.05 * (i + 1) as f32 })
+            .collect();
+        let mz: Vec<f32> = (0..n).map(|i| 1.0 - 0.08 * i as f32).collect();
+        let ins: [&[f32]; 5] = [&ax, &[0.3], &[0.0], &[0.0], &mz];
+        let mut d = vec![0.0f32; n];
+        assert!((k.f32_arrays)(&ins, &mut [&mut d], n));
+        for i in 0..n {
+            let row = [ax[i], 0.3, 0.0, 0.0, mz[i]].map(f32x8::splat);
+            let mut y = [f32x8::splat(0.0)];
+            (k.f32x8)(&row, &mut y);
+            let (got, want) = (d[i], y[0].lane(0));
+            assert!(
+                got.to_bits() == want.to_bits() || (got.is_nan() && want.is_nan()),
+                "{i}"
+            );
+            assert_eq!(got.is_nan(), i == 3, "{i}");
+        }
+        // Wrong counts or lengths: false, nothing written.
+        let mut d = vec![7.0f32; n];
+        assert!(!(k.f32_arrays)(&ins[..4], &mut [&mut d], n));
+        assert!(!(k.f32_arrays)(&ins, &mut [&mut d], n + 1));
+        let short = [&ax[..5], &[0.3][..], &[0.0][..], &[0.0][..], &mz[..]];
+        assert!(!(k.f32_arrays)(&short, &mut [&mut d], n));
+        assert!(d.iter().all(|&v| v == 7.0));
+        assert!(KERNELS.iter().all(|k| !(k.f64_arrays)(&[], &mut [], 0)));
+    }
+}
