@@ -406,7 +406,7 @@ pub type Eval<T> = fn(&[T], &mut [T]);
 
 /// A kernel over whole arrays, `n` elements: `ins[i]` holds argument `i` (length `n`, or 1 for
 /// one value broadcast to every element), `outs[j]` receives output `j` (length `n`). Returns
-/// `false`, writing nothing, when the counts or lengths do not fit. See [`over_arrays`].
+/// `false`, writing nothing, when the counts or lengths do not fit.
 pub type Arrays<S> = fn(&[&[S]], &mut [&mut [S]], usize) -> bool;
 
 /// One public scalar kernel of `brdf`.
@@ -431,8 +431,10 @@ pub struct Kernel {
     pub f32x8: Eval<f32x8>,
     /// The kernel on four `f64` lanes.
     pub f64x4: Eval<f64x4>,
-    /// The kernel over whole `f32` arrays, eight elements at a time on `f32x8`, the lane
-    /// entry's results element for element ([`over_arrays`]).
+    /// The kernel over whole `f32` arrays, eight elements at a time on `f32x8` with the row's
+    /// formula inlined in the loop: each element gets the `f32x8` entry's result on its row
+    /// splat to every lane (lanes that come out NaN are evaluated again alone, so an invalid
+    /// element never makes its neighbours NaN).
     pub f32_arrays: Arrays<f32>,
     /// The kernel over whole `f64` arrays, four elements at a time on `f64x4`.
     pub f64_arrays: Arrays<f64>,
@@ -688,7 +690,7 @@ fn lanewise<T: Real>(x: &[T], y: &mut [T], body: fn(&[T], &mut [T])) {
 }
 
 /// Lane types loaded from and stored to slices of their scalars, for [`over_arrays`].
-pub trait Lanes: Real {
+trait Lanes: Real {
     /// The lanes from `s` (`s.len() == LANES`; NaN in lanes `s` lacks).
     fn load(s: &[Self::Scalar]) -> Self;
     /// The first `s.len()` lanes into `s` (`s.len() <= LANES`).
