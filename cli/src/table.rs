@@ -404,6 +404,11 @@ pub struct Broken {
 /// written in the table's output order.
 pub type Eval<T> = fn(&[T], &mut [T]);
 
+/// A kernel over whole arrays, `n` elements: `ins[i]` holds argument `i` (length `n`, or 1 for
+/// one value broadcast to every element), `outs[j]` receives output `j` (length `n`). Returns
+/// `false`, writing nothing, when the counts or lengths do not fit.
+pub type Arrays<S> = fn(&[&[S]], &mut [&mut [S]], usize) -> bool;
+
 /// One public scalar kernel of `brdf`.
 #[derive(Clone, Copy)]
 pub struct Kernel {
@@ -426,6 +431,13 @@ pub struct Kernel {
     pub f32x8: Eval<f32x8>,
     /// The kernel on four `f64` lanes.
     pub f64x4: Eval<f64x4>,
+    /// The kernel over whole `f32` arrays, eight elements at a time on `f32x8` with the row's
+    /// formula inlined in the loop: each element gets the `f32x8` entry's result on its row
+    /// splat to every lane (lanes that come out NaN are evaluated again alone, so an invalid
+    /// element never makes its neighbours NaN).
+    pub f32_arrays: Arrays<f32>,
+    /// The kernel over whole `f64` arrays, four elements at a time on `f64x4`.
+    pub f64_arrays: Arrays<f64>,
 }
 
 impl core::fmt::Debug for Kernel {
@@ -687,6 +699,113 @@ fn lanewise<T: Real>(x: &[T], y: &mut [T], body: fn(&[T], &mut [T])) {
     }
 }
 
+/// Lane types loaded from and stored to slices of their scalars, for [`over_arrays`].
+trait Lanes: Real {
+    /// The lanes from `s` (`s.len() == LANES`; NaN in lanes `s` lacks).
+    fn load(s: &[Self::Scalar]) -> Self;
+    /// The first `s.len()` lanes into `s` (`s.len() <= LANES`).
+    fn store(self, s: &mut [Self::Scalar]);
+}
+
+macro_rules! lanes {
+    ($t:ty, $s:ty, $n:literal) => {
+        impl Lanes for $t {
+            #[inline(always)]
+            fn load(s: &[$s]) -> Self {
+                <[$s; $n]>::try_from(s).map_or_else(
+                    |_| Self::from_fn(|i| s.get(i).copied().unwrap_or(<$s>::NAN)),
+                    Self::new,
+                )
+            }
+            #[inline(always)]
+            fn store(self, s: &mut [$s]) {
+                let a = self.to_array();
+                // A full group as one fixed-size copy (a copy of unknown length is a call to
+                // memmove, a fifth of the time of a cheap kernel).
+                match <&mut [$s; $n]>::try_from(&mut *s) {
+                    Ok(full) => *full = a,
+                    Err(_) => {
+                        for (o, v) in s.iter_mut().zip(a) {
+                            *o = v;
+                        }
+                    }
+                }
+            }
+        }
+    };
+}
+lanes!(f32x8, f32, 8);
+lanes!(f64x4, f64, 4);
+
+/// NaN test on a scalar (NaN is the one value unequal to itself).
+#[allow(clippy::eq_op)]
+fn scalar_nan<S: PartialOrd + Copy>(v: S) -> bool {
+    v != v
+}
+
+/// The loop behind every [`Kernel::f32_arrays`] and [`Kernel::f64_arrays`]: `f` (the kernel's
+/// body, inlined here by each row's `kernel!`, so a group costs no call and no argument
+/// marshalling) on `L::LANES` elements at a time, arguments as [`Arrays`] describes.
+///
+/// Each element gets what the lane entry `slow` gives on its row splat to every lane. A
+/// partial last group repeats its last element in the missing lanes (a value the caller
+/// gave, as `brdf::batch` does) and stores only its real elements. A lane holding NaN may owe
+/// it to its neighbours: a kernel that builds a validated parameter type (`Ggx::new`,
+/// `PhongDiffuseSpecular::new`) gets NaN in every lane when one lane's parameters are invalid
+/// (the constructor checks all lanes), so such lanes are evaluated again alone through `slow`,
+/// and each element's result depends on its own inputs only.
+#[inline(always)]
+fn over_arrays<L: Lanes, const NA: usize, const NO: usize>(
+    ins: &[&[L::Scalar]],
+    outs: &mut [&mut [L::Scalar]],
+    n: usize,
+    f: impl Fn([L; NA]) -> [L; NO],
+    slow: Eval<L>,
+) -> bool {
+    if ins.len() != NA
+        || outs.len() != NO
+        || ins.iter().any(|s| s.len() != n && s.len() != 1)
+        || outs.iter().any(|o| o.len() != n)
+    {
+        return false;
+    }
+    let w = L::LANES;
+    let mut s0 = 0;
+    while s0 < n {
+        let len = w.min(n - s0);
+        // A plain loop, not `core::array::from_fn`: that one is a call per argument even at
+        // opt-level 3, three times the cost of Schlick's formula.
+        let mut x = [L::ZERO; NA];
+        for (xi, s) in x.iter_mut().zip(ins) {
+            *xi = if s.len() == 1 {
+                L::from_scalar(s[0])
+            } else if len == w {
+                L::load(&s[s0..s0 + w])
+            } else {
+                L::from_fn(|j| s[s0 + j.min(len - 1)])
+            };
+        }
+        let y = f(x);
+        for (o, v) in outs.iter_mut().zip(y) {
+            v.store(&mut o[s0..s0 + len]);
+        }
+        if y.iter().any(|v| v.is_nan().any()) {
+            for i in 0..len {
+                if y.iter().any(|v| scalar_nan(v.lane(i))) {
+                    let xi = x.map(|v| L::from_scalar(v.lane(i)));
+                    let mut yi = [L::ZERO; NO];
+                    slow(&xi, &mut yi);
+                    for (o, v) in outs.iter_mut().zip(yi) {
+                        o[s0 + i] = v.lane(0);
+                    }
+                }
+            }
+        }
+        s0 += len;
+    }
+    true
+}
+
 /// Lane 0 of `x` as an `f64` (exact): the value of an argument that is one `f64` per call.
 fn f64_of<T: Real>(x: T) -> f64 {
     x.lane(0).into()
@@ -746,19 +865,41 @@ macro_rules! kernel {
      [$($arg:ident : $dom:expr),* $(,)?] -> [$($out:ident : $range:expr),* $(,)?],
      $(where [$($c:expr),* $(,)?],)?
      $body:expr) => {{
+        const NA: usize = <[&str]>::len(&[$(stringify!($arg)),*]);
+        const NO: usize = <[&str]>::len(&[$(stringify!($out)),*]);
         #[allow(
             unused_variables,
             unused_mut,
             clippy::too_many_arguments,
             clippy::many_single_char_names
         )]
+        #[inline]
+        fn arr<T: Real>(a: [T; NA]) -> [T; NO] {
+            let [$($arg),*] = a;
+            $body
+        }
         fn body<T: Real>(x: &[T], y: &mut [T]) {
-            let mut it = x.iter().copied();
-            $(let $arg: T = it.next().unwrap_or(T::splat(f64::NAN));)*
-            let r = $body;
+            let mut a = [T::splat(f64::NAN); NA];
+            for (ai, v) in a.iter_mut().zip(x) {
+                *ai = *v;
+            }
+            let r = arr(a);
             for (o, v) in y.iter_mut().zip(r) {
                 *o = v;
             }
+        }
+        #[inline]
+        fn group<T: Real>(a: [T; NA]) -> [T; NO] {
+            if $lw {
+                let mut y = [T::ZERO; NO];
+                lanewise(&a, &mut y, body::<T>);
+                y
+            } else {
+                arr(a)
+            }
+        }
+        fn arrays<L: Lanes>(ins: &[&[L::Scalar]], outs: &mut [&mut [L::Scalar]], n: usize) -> bool {
+            over_arrays(ins, outs, n, group::<L>, eval::<L>)
         }
         fn eval<T: Real>(x: &[T], y: &mut [T]) {
             if $lw {
@@ -777,6 +918,8 @@ macro_rules! kernel {
             f64: eval::<f64>,
             f32x8: eval::<f32x8>,
             f64x4: eval::<f64x4>,
+            f32_arrays: arrays::<f32x8>,
+            f64_arrays: arrays::<f64x4>,
         }
     }};
     ($path:literal, $($rest:tt)*) => { kernel!(@go false, $path, $($rest)*) };
@@ -3580,3 +3723,45 @@ pub static KERNELS: &[Kernel] = &[
         )
     ),
 ];
+
+#[cfg(test)]
+mod arrays_tests {
+    use super::{KERNELS, find};
+    use brdf::Real;
+    use brdf::wide::f32x8;
+
+    #[test]
+    #[allow(clippy::cast_precision_loss)]
+    fn arrays_equal_the_lane_entry_per_element_and_refuse_wrong_lengths() {
+        // Eleven elements: one full group of eight and a partial one, an argument broadcast,
+        // and an invalid alpha in element 3, which must not turn its group's other lanes NaN.
+        let k = find("ggx::Ggx::d").expect("row");
+        let n = 11;
+        let ax: Vec<f32> = (0..n)
+            .map(|i| if i == 3 { -1.0 } else { 0.05 * (i + 1) as f32 })
+            .collect();
+        let mz: Vec<f32> = (0..n).map(|i| 1.0 - 0.08 * i as f32).collect();
+        let ins: [&[f32]; 5] = [&ax, &[0.3], &[0.0], &[0.0], &mz];
+        let mut d = vec![0.0f32; n];
+        assert!((k.f32_arrays)(&ins, &mut [&mut d], n));
+        for i in 0..n {
+            let row = [ax[i], 0.3, 0.0, 0.0, mz[i]].map(f32x8::splat);
+            let mut y = [f32x8::splat(0.0)];
+            (k.f32x8)(&row, &mut y);
+            let (got, want) = (d[i], y[0].lane(0));
+            assert!(
+                got.to_bits() == want.to_bits() || (got.is_nan() && want.is_nan()),
+                "{i}"
+            );
+            assert_eq!(got.is_nan(), i == 3, "{i}");
+        }
+        // Wrong counts or lengths: false, nothing written.
+        let mut d = vec![7.0f32; n];
+        assert!(!(k.f32_arrays)(&ins[..4], &mut [&mut d], n));
+        assert!(!(k.f32_arrays)(&ins, &mut [&mut d], n + 1));
+        let short = [&ax[..5], &[0.3][..], &[0.0][..], &[0.0][..], &mz[..]];
+        assert!(!(k.f32_arrays)(&short, &mut [&mut d], n));
+        assert!(d.iter().all(|&v| v == 7.0));
+        assert!(KERNELS.iter().all(|k| !(k.f64_arrays)(&[], &mut [], 0)));
+    }
+}

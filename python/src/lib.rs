@@ -91,40 +91,14 @@ fn module_doc(path: &str) -> Option<&'static str> {
     lookup(docs::MOD_DOCS, path)
 }
 
-/// Loads and stores of a lane type from and to slices of its scalars.
+/// Loads and stores of a scalar type from and to slices (the `lanes=False` path; the lane
+/// path runs through the table's whole-array entries, [`Kernel::f64_arrays`]).
 trait Pack: Real {
-    /// The lanes from `s` (`s.len() == LANES`).
+    /// The value `s[0]`.
     fn load(s: &[Self::Scalar]) -> Self;
-    /// The first `s.len()` lanes into `s`.
+    /// The value into `s[0]`.
     fn store(self, s: &mut [Self::Scalar]);
 }
-
-macro_rules! pack_wide {
-    ($t:ty, $s:ty, $n:literal) => {
-        impl Pack for $t {
-            #[inline]
-            fn load(s: &[$s]) -> Self {
-                <[$s; $n]>::try_from(s).map_or_else(|_| Self::from_fn(|i| s[i]), Self::new)
-            }
-            #[inline]
-            fn store(self, s: &mut [$s]) {
-                let a = self.to_array();
-                // A full group as one fixed-size copy (a slice copy of unknown length is a
-                // call to memmove: a fifth of the time of a cheap kernel).
-                match <&mut [$s; $n]>::try_from(&mut *s) {
-                    Ok(full) => *full = a,
-                    Err(_) => {
-                        for (o, v) in s.iter_mut().zip(a) {
-                            *o = v;
-                        }
-                    }
-                }
-            }
-        }
-    };
-}
-pack_wide!(f32x8, f32, 8);
-pack_wide!(f64x4, f64, 4);
 
 macro_rules! pack_scalar {
     ($t:ty) => {
@@ -214,19 +188,21 @@ fn is_nan<S: PartialOrd + Copy>(v: S) -> bool {
     v != v
 }
 
-/// [`run_lanes`] split over rayon's pool in tasks of [`CHUNK`] elements when `n` is large.
-fn run_par<L: Pack>(eval: Eval<L>, ins: &[&[L::Scalar]], outs: &mut [&mut [L::Scalar]], n: usize)
-where
-    L::Scalar: Copy + Send + Sync,
-{
+/// `run(ins, outs, n)` split over rayon's pool in tasks of [`CHUNK`] elements when `n` is large.
+fn run_par<S: Copy + Send + Sync>(
+    run: impl Fn(&[&[S]], &mut [&mut [S]], usize) + Sync,
+    ins: &[&[S]],
+    outs: &mut [&mut [S]],
+    n: usize,
+) {
     if n < 2 * CHUNK {
-        run_lanes(eval, ins, outs, n);
+        run(ins, outs, n);
         return;
     }
     // One task per chunk: the chunk's slice of every input (or the broadcast value) and of
     // every output.
     let tasks = n.div_ceil(CHUNK);
-    let mut out_chunks: Vec<Vec<&mut [L::Scalar]>> = (0..tasks).map(|_| Vec::new()).collect();
+    let mut out_chunks: Vec<Vec<&mut [S]>> = (0..tasks).map(|_| Vec::new()).collect();
     for o in outs.iter_mut() {
         for (t, c) in o.chunks_mut(CHUNK).enumerate() {
             out_chunks[t].push(c);
@@ -238,11 +214,11 @@ where
         .for_each(|(t, mut oc)| {
             let lo = t * CHUNK;
             let hi = (lo + CHUNK).min(n);
-            let ic: Vec<&[L::Scalar]> = ins
+            let ic: Vec<&[S]> = ins
                 .iter()
                 .map(|s| if s.len() == 1 { *s } else { &s[lo..hi] })
                 .collect();
-            run_lanes(eval, &ic, &mut oc, hi - lo);
+            run(&ic, &mut oc, hi - lo);
         });
 }
 
@@ -264,7 +240,7 @@ fn common_len(lens: &[usize], nargs: usize) -> PyResult<usize> {
 }
 
 macro_rules! evaluator {
-    ($(#[$doc:meta])* $name:ident, $s:ty, $lanes:ty, $scalar:ident, $lane:ident) => {
+    ($(#[$doc:meta])* $name:ident, $s:ty, $scalar:ident, $arrays:ident) => {
         $(#[$doc])*
         #[pyfunction]
         #[pyo3(signature = (index, inputs, outputs, lanes = true, threads = true))]
@@ -305,11 +281,19 @@ macro_rules! evaluator {
                 .map(|a| a.as_slice_mut())
                 .collect::<Result<_, _>>()
                 .map_err(contiguous)?;
+            // The lane path: the table's whole-array loop (the kernel inlined into it, no
+            // call per group); its length checks hold here, so it always writes.
+            let arrays = |i: &[&[$s]], o: &mut [&mut [$s]], n: usize| {
+                let _ = (k.$arrays)(i, o, n);
+            };
+            let scalar = |i: &[&[$s]], o: &mut [&mut [$s]], n: usize| {
+                run_lanes::<$s>(k.$scalar, i, o, n);
+            };
             py.detach(|| match (lanes, threads) {
-                (true, true) => run_par::<$lanes>(k.$lane, &ins, &mut o, n),
-                (true, false) => run_lanes::<$lanes>(k.$lane, &ins, &mut o, n),
-                (false, true) => run_par::<$s>(k.$scalar, &ins, &mut o, n),
-                (false, false) => run_lanes::<$s>(k.$scalar, &ins, &mut o, n),
+                (true, true) => run_par(arrays, &ins, &mut o, n),
+                (true, false) => arrays(&ins, &mut o, n),
+                (false, true) => run_par(scalar, &ins, &mut o, n),
+                (false, false) => scalar(&ins, &mut o, n),
             });
             Ok(())
         }
@@ -319,13 +303,13 @@ macro_rules! evaluator {
 evaluator!(
     /// Kernel `index` of the table on `f64` inputs (each contiguous, length n or 1), written
     /// into `outputs` (one contiguous array of length n per output; numpy allocates them, so
-    /// its memory is reused as numpy's own temporaries are). `lanes`: the table's `f64x4` entry (else its scalar `f64` entry);
+    /// its memory is reused as numpy's own temporaries are). `lanes`: the table's whole-array `f64x4` entry `f64_arrays` (else its scalar `f64` entry, one call per element);
     /// `threads`: split arrays above 65536 elements over rayon's pool. The GIL is released.
-    eval_f64, f64, f64x4, f64, f64x4
+    eval_f64, f64, f64, f64_arrays
 );
 evaluator!(
     /// [`eval_f64`] on `f32` (`f32x8` lanes, or the scalar `f32` entry).
-    eval_f32, f32, f32x8, f32, f32x8
+    eval_f32, f32, f32, f32_arrays
 );
 
 /// Kernel `index` on one row through the table's own entries, the route the CLI takes: the

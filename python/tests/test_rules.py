@@ -143,6 +143,22 @@ def test_unchecked_invalid_parameter_gives_nan():
     assert np.isnan(brdf.ggx.Ggx.d(-1.0, 0.3, 0.0, 0.0, 1.0))
 
 
+@pytest.mark.parametrize("threads", [False, True])
+def test_an_invalid_element_leaves_its_lane_neighbours_alone(dtype, threads):
+    # `Ggx::new` on lanes is NaN in every lane when one lane's alpha is invalid; the array
+    # loop evaluates such lanes again alone, so only the invalid element is NaN.
+    n = 70_001 if threads else 19  # above the threading threshold, or a few lane groups
+    alpha_x = np.full(n, 0.3, dtype)
+    bad = [2, 9, n - 1]
+    alpha_x[bad] = -1.0
+    got = brdf.ggx.Ggx.d(alpha_x, 0.5, 0.0, 0.6, 0.8, threads=threads)
+    assert np.isnan(got[bad]).all()
+    ok = np.ones(n, bool)
+    ok[bad] = False
+    want = brdf.ggx.Ggx.d(dtype(0.3), 0.5, 0.0, 0.6, 0.8)
+    assert same_bits(got[ok], np.full(n - len(bad), want, dtype)).all()
+
+
 PARAM_TYPES = dict(_native.param_types())
 
 
