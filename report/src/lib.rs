@@ -22,7 +22,10 @@ mod stability;
 mod textbook;
 mod tradeoff;
 
-use sections::{checks, gpu as gpu_section, ibl as ibl_section, lobes, tonemap as tonemap_section};
+use sections::{
+    checks, gpu as gpu_section, ibl as ibl_section, layers as layers_section, lobes,
+    tonemap as tonemap_section,
+};
 use std::error::Error;
 use std::path::{Path, PathBuf};
 use std::time::Instant;
@@ -523,6 +526,7 @@ pub fn run() -> Result<(), Box<dyn Error>> {
             ibl_section::dfg_section();
             ibl_section::irradiance_section();
             ibl_section::energy_section();
+            layers_section::albedo_section(a.quick)?;
             gpu_section::gpu_section();
             Ok(())
         },

@@ -3,5 +3,6 @@
 pub mod checks;
 pub mod gpu;
 pub mod ibl;
+pub mod layers;
 pub mod lobes;
 pub mod tonemap;
