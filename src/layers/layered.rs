@@ -21,7 +21,11 @@
 //! a black sheen and strength 0 each leave the base bit for bit (`cargo test --test layers
 //! layered::`).
 //!
-//! The sheen uses the extension's min form of albedo scaling (reciprocal); the coat
+//! The sheen uses the extension's min form of albedo scaling (reciprocal); for many lights at
+//! one shading point, [`Layered::at_view`] reads the view's sheen albedo E(n.v) and coat
+//! Fresnel once, and its [`Prepared::eval`] (the min form, equal to [`Layered::eval`] bit for
+//! bit) reads only E(n.l) per light, while [`Prepared::eval_view_only`] (the extension's
+//! view-only form 1 - max(sheenColor) E(n.v)) reads nothing per light. The coat
 //! attenuates by F_coat(n_c.v), the extension's choice, which is not reciprocal (see
 //! [`clearcoat`] for the other argument).
 //!

@@ -15,8 +15,8 @@ fn wo_at(mu: f64) -> V3<f64> {
 }
 
 /// The albedo of `f` (its first channel) at the view of cosine `mu`.
-fn albedo(mu: f64, mut f: impl FnMut(V3<f64>, V3<f64>) -> f64) -> f64 {
-    directional_albedo(wo_at(mu), |o, i| f(o, i)).value
+fn albedo(mu: f64, f: impl FnMut(V3<f64>, V3<f64>) -> f64) -> f64 {
+    directional_albedo(wo_at(mu), f).value
 }
 
 /// Prints the albedo table: per (roughness r, mu), the sheen lobe (white sheen colour, sheen
