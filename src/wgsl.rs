@@ -16,7 +16,8 @@
 //! [`COMMON`] must come first, then each family after the families it calls into
 //! ([`Family::needs`]: [`COOK_TORRANCE`] needs [`GGX`], [`FRESNEL`] and [`BECKMANN`],
 //! [`DIFFUSE`] needs [`FRESNEL`], [`MATERIAL`] needs [`GGX`], [`FRESNEL`], [`BECKMANN`] and
-//! [`COOK_TORRANCE`], [`SAMPLING`] needs [`GGX`] and [`BECKMANN`]). No
+//! [`COOK_TORRANCE`], [`SAMPLING`] needs [`GGX`] and [`BECKMANN`], [`LAYERS`] needs [`GGX`]
+//! and [`FRESNEL`]). No
 //! family defines a name another family defines, so any such subset concatenated after
 //! [`COMMON`] is one valid WGSL module:
 //!
@@ -116,6 +117,13 @@ pub const IBL: &str = include_str!("../wgsl/ibl.wgsl");
 /// visible-normal pdfs and GGX reflection pdf. Needs [`GGX`] and [`BECKMANN`] before it.
 pub const SAMPLING: &str = include_str!("../wgsl/sampling.wgsl");
 
+/// The twins of `brdf::layers`' glTF extension lobes: the Charlie sheen's D, fitted Lambda
+/// and V, Neubelt's and Ashikhmin's cloth terms, the sheen lobe, the two analytic sheen albedo
+/// fits and the albedo scaling; the clearcoat's Fresnel, Kelemen's V, the coat lobes and the
+/// layering; F0 from IOR and the specular extension's dielectric F0; the anisotropy's tangent
+/// width, direction and bent reflection vector. Needs [`GGX`] and [`FRESNEL`] before it.
+pub const LAYERS: &str = include_str!("../wgsl/layers.wgsl");
+
 /// [`COMMON`] followed by every family, each after the families it needs: one module defining
 /// every twin.
 pub const ALL: &str = concat!(
@@ -132,6 +140,7 @@ pub const ALL: &str = concat!(
     include_str!("../wgsl/material.wgsl"),
     include_str!("../wgsl/ibl.wgsl"),
     include_str!("../wgsl/sampling.wgsl"),
+    include_str!("../wgsl/layers.wgsl"),
 );
 
 /// One family's WGSL, with the families it calls into.
@@ -207,5 +216,10 @@ pub const FAMILIES: &[Family] = &[
         name: "sampling",
         source: SAMPLING,
         needs: &["ggx", "beckmann"],
+    },
+    Family {
+        name: "layers",
+        source: LAYERS,
+        needs: &["ggx", "fresnel"],
     },
 ];

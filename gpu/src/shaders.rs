@@ -313,7 +313,7 @@ pub fn translate(module: &Module, info: &ModuleInfo) -> Result<Translations, Str
 /// The modules of the kernels a shader calls, whose every kernel must have a WGSL twin or a
 /// reason in [`NO_TWIN`]: Fresnel, GGX and Beckmann, Cook-Torrance, the diffuse lobes, the
 /// Phong family, the metallic-roughness material, the punctual lights, the tonemappers and
-/// the colour transfer functions.
+/// the colour transfer functions, the glTF extension lobes.
 pub const TWINNED_MODULES: &[&str] = &[
     "fresnel",
     "ggx",
@@ -326,6 +326,7 @@ pub const TWINNED_MODULES: &[&str] = &[
     "tonemap",
     "color",
     "microfacet",
+    "layers",
 ];
 
 /// Kernels without a WGSL twin, each with the reason: an exact path, or a path prefix ending
@@ -397,6 +398,16 @@ pub const NO_TWIN: &[(&str, &str)] = &[
         "ibl::energy::",
         "energy-compensation tables and their fits: not written yet (a shader reads them from \
          a texture)",
+    ),
+    (
+        "layers::sheen::albedo",
+        "a bilinear lookup of a precomputed table: a shader samples ALBEDO_TABLE as a texture \
+         (layers_sheen_albedo_fit_materialx is the analytic shader form)",
+    ),
+    (
+        "layers::layered::Layered::",
+        "not written yet: the layered material composes the twinned lobes; a shader composes \
+         them itself from its own material inputs",
     ),
     (
         "ibl::irradiance::",

@@ -23,6 +23,10 @@ mod textbook;
 mod tradeoff;
 
 use sections::transmission as transmission_section;
+use sections::{
+    checks, gpu as gpu_section, ibl as ibl_section, layers as layers_section, lobes,
+    tonemap as tonemap_section,
+};
 use sections::{checks, gpu as gpu_section, ibl as ibl_section, lobes, tonemap as tonemap_section};
 use std::error::Error;
 use std::path::{Path, PathBuf};
@@ -526,6 +530,7 @@ pub fn run() -> Result<(), Box<dyn Error>> {
             ibl_section::energy_section();
             transmission_section::dielectric_energy_section(a.quick);
             transmission_section::iridescence_strip_section();
+            layers_section::albedo_section(a.quick)?;
             gpu_section::gpu_section();
             Ok(())
         },

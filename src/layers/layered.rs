@@ -21,7 +21,11 @@
 //! a black sheen and strength 0 each leave the base bit for bit (`cargo test --test layers
 //! layered::`).
 //!
-//! The sheen uses the extension's min form of albedo scaling (reciprocal); the coat
+//! The sheen uses the extension's min form of albedo scaling (reciprocal); for many lights at
+//! one shading point, [`Layered::at_view`] reads the view's sheen albedo E(n.v) and coat
+//! Fresnel once, and its [`Prepared::eval`] (the min form, equal to [`Layered::eval`] bit for
+//! bit) reads only E(n.l) per light, while [`Prepared::eval_view_only`] (the extension's
+//! view-only form 1 - max(sheenColor) E(n.v)) reads nothing per light. The coat
 //! attenuates by F_coat(n_c.v), the extension's choice, which is not reciprocal (see
 //! [`clearcoat`] for the other argument).
 //!
@@ -231,6 +235,29 @@ impl<T: Real> Layered<T> {
     /// component of wo or wi is NaN or infinite.
     #[must_use]
     pub fn eval(&self, wo: V3<T>, wi: V3<T>) -> V3<T> {
+        let e_v = sheen::albedo(wo.z, self.sheen_alpha);
+        let e_l = sheen::albedo(wi.z, self.sheen_alpha);
+        let f_coat = clearcoat::fresnel(self.coat_normal.dot(wo));
+        self.eval_with(wo, wi, e_v, e_l, f_coat)
+    }
+
+    /// The material prepared at the view `wo` (local frame) for many lights: the sheen albedo
+    /// E(n.v) and the coat's Fresnel F_coat(n_c.v) are read once here, not per light
+    /// ([`Prepared`]). Cost: one table lookup and one Schlick Fresnel.
+    #[must_use]
+    pub fn at_view(&self, wo: V3<T>) -> Prepared<T> {
+        Prepared {
+            material: *self,
+            wo,
+            e_v: sheen::albedo(wo.z, self.sheen_alpha),
+            f_coat: clearcoat::fresnel(self.coat_normal.dot(wo)),
+        }
+    }
+
+    /// [`eval`](Self::eval) with the view's sheen albedo `e_v`, the light's `e_l` and the
+    /// coat's Fresnel at the view `f_coat` given.
+    #[inline]
+    fn eval_with(&self, wo: V3<T>, wi: V3<T>, e_v: T, e_l: T, f_coat: T) -> V3<T> {
         let h = (wo + wi).normalize_or(V3::unit_z());
         let v_dot_h = wo.dot(h);
         let c = Cosines {
@@ -289,8 +316,6 @@ impl<T: Real> Layered<T> {
         );
         // Sheen over the base: f_sheen + base s, one fused multiply-add per channel, so a
         // black sheen (f_sheen = 0, s = 1) leaves the base bit for bit.
-        let e_v = sheen::albedo(wo.z, self.sheen_alpha);
-        let e_l = sheen::albedo(wi.z, self.sheen_alpha);
         let s = sheen::albedo_scaling(self.sheen_color, e_v, e_l);
         let f_sheen = sheen::charlie(c, self.sheen_color, self.sheen_alpha);
         let sheened = V3::new(
@@ -311,7 +336,6 @@ impl<T: Real> Layered<T> {
             let favg = fresnel_avg_schlick(T::splat(clearcoat::F0), T::ONE);
             coat += kulla_conty_ggx(cc.n_dot_v, cc.n_dot_l, self.coat_alpha, favg);
         }
-        let f_coat = clearcoat::fresnel(cc.n_dot_v);
         let out = clearcoat::layer(sheened, coat, self.clearcoat, f_coat);
         let fin = |x: T| finite_dirs(wo, wi, above_horizon(wo.z, wi.z, x));
         V3::new(fin(out.x), fin(out.y), fin(out.z))
@@ -464,5 +488,63 @@ impl<T: Real> Layered<T> {
     pub fn sample_world(&self, sp: &ShadingPoint<T>, u1: T, u2: T) -> (V3<T>, T) {
         let (wi, pdf) = self.sample(sp.wo(), u1, u2);
         (sp.world(wi), pdf)
+    }
+}
+
+/// The layered material prepared at one shading point's view direction ([`Layered::at_view`]),
+/// to be evaluated for each light without re-reading what depends on the view alone: the
+/// sheen albedo E(n.v) and the coat's Fresnel F_coat(n_c.v).
+///
+/// Two forms of the sheen's albedo scaling of the layer below:
+/// - [`eval`](Self::eval), the form KHR_materials_sheen specifies ("Albedo-scaling
+///   technique"): s = min(1 - max(sheenColor) E(n.v), 1 - max(sheenColor) E(n.l)), with
+///   E(n.v) read once here and E(n.l) per light (it depends on the light). Reciprocal, and
+///   equal to [`Layered::eval`] bit for bit (`cargo test --test layers layered::prepared`).
+/// - [`eval_view_only`](Self::eval_view_only), the cheaper form the extension allows ("to
+///   trade a bit of accuracy for more performance"): s = 1 - max(sheenColor) E(n.v), one
+///   value for every light and the environment, no lookup per light. Not reciprocal; equal
+///   to the min form where E(n.l) <= E(n.v).
+///
+/// ```
+/// use brdf::V3;
+/// use brdf::layers::layered::Layered;
+///
+/// let m = Layered::new(V3::new(0.5, 0.4, 0.3), 0.0, 0.6)?.with_sheen(V3::splat(0.7), 0.5)?;
+/// let wo = V3::new(0.0, 0.6, 0.8);
+/// let at = m.at_view(wo);
+/// for wi in [V3::new(0.6, 0.0, 0.8), V3::new(0.0, -0.8, 0.6)] {
+///     assert_eq!(at.eval(wi), m.eval(wo, wi));
+/// }
+/// # Ok::<(), brdf::ParamError>(())
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Prepared<T> {
+    material: Layered<T>,
+    wo: V3<T>,
+    e_v: T,
+    f_coat: T,
+}
+
+impl<T: Real> Prepared<T> {
+    /// f(wo, wi) in RGB with the extension's min form of albedo scaling, E(n.v) and
+    /// F_coat(n_c.v) taken from the preparation: [`Layered::eval`]`(wo, wi)` bit for bit, with
+    /// its domain and edges (0 below either horizon, NaN for a NaN or infinite component of
+    /// wo or wi).
+    #[must_use]
+    pub fn eval(&self, wi: V3<T>) -> V3<T> {
+        let m = &self.material;
+        let e_l = sheen::albedo(wi.z, m.sheen_alpha);
+        m.eval_with(self.wo, wi, self.e_v, e_l, self.f_coat)
+    }
+
+    /// f(wo, wi) in RGB with the extension's view-only albedo scaling
+    /// s = 1 - max(sheenColor) E(n.v): no sheen albedo read per light. Equal to
+    /// [`eval`](Self::eval) for a black sheen, and wherever E(n.l) <= E(n.v); above it
+    /// (grazing lights of rough sheens) the base is dimmed less than by the min form. Same
+    /// domain and edges as [`Layered::eval`].
+    #[must_use]
+    pub fn eval_view_only(&self, wi: V3<T>) -> V3<T> {
+        self.material
+            .eval_with(self.wo, wi, self.e_v, self.e_v, self.f_coat)
     }
 }

@@ -267,6 +267,17 @@ fn layered_rows<T: Real>(t: &mut Vec<Kernel<T>>) {
             vec![v("wo", WO), c("u1", 0.3), c("u2", 0.6)],
             move |x| o4(m.sample(v3(x, 0), x[3], x[4])),
         ));
+        // Prepared per shading point: a bad view reaches every light.
+        t.push(k(
+            &format!("Prepared::eval({label})"),
+            vec![dirs()],
+            move |x| o3(m.at_view(v3(x, 0)).eval(v3(x, 3))),
+        ));
+        t.push(k(
+            &format!("Prepared::eval_view_only({label})"),
+            vec![dirs()],
+            move |x| o3(m.at_view(v3(x, 0)).eval_view_only(v3(x, 3))),
+        ));
         // World space: a shading point of normal n and view v.
         let n_v = || [v("n", [0.0, 0.6, 0.8]), v("v", WO)].concat();
         let sp = |x: &[T]| brdf::ShadingPoint::new(v3(x, 0), v3(x, 3));
@@ -3146,6 +3157,10 @@ const NOT_KERNELS: &[(&str, &str)] = &[
     (
         "Volume::attenuation_coefficient",
         "getter of a derived parameter (validated parameters only)",
+    ),
+    (
+        "Layered::at_view",
+        "prepares the material at a view; its Prepared::eval rows check the view",
     ),
 ];
 

@@ -10,6 +10,8 @@
 //! - `anisotropy`: strength 0 is isotropic, direction, bent reflection against the viewer
 //! - `layered`: the layered material: zero layers, furnace, energy, per-lobe compensation,
 //!   reciprocity, sampler chi-square, extremes and lanes
+//! - `prepared`: the material prepared per shading point against the direct eval; the
+//!   view-only albedo scaling against the min form
 
 #[path = "../common/mod.rs"]
 mod common;
@@ -17,6 +19,7 @@ mod common;
 mod anisotropy;
 mod clearcoat;
 mod layered;
+mod prepared;
 mod sheen;
 mod sheen_albedo;
 mod sheen_engines;

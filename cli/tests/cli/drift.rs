@@ -985,6 +985,19 @@ const EXCLUDED: &[(&str, &str)] = &[
         "world-space wrapper: Layered::pdf(sp.wo(), sp.local(l)), which is in the table",
     ),
     (
+        "layers::layered::Layered::at_view",
+        "prepares the material at a view for Prepared::eval, not a kernel",
+    ),
+    (
+        "layers::layered::Prepared::eval",
+        "prepared form of Layered::eval (bit for bit), which is in the table",
+    ),
+    (
+        "layers::layered::Prepared::eval_view_only",
+        "Layered::eval with the view-only albedo scaling, prepared per shading point: \
+         Layered::at_view(wo).eval_view_only(wi)",
+    ),
+    (
         "layers::layered::Layered::sample_world",
         "world-space wrapper: sp.world of Layered::sample(sp.wo(), u1, u2), which is in the table",
     ),

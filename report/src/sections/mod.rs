@@ -3,6 +3,7 @@
 pub mod checks;
 pub mod gpu;
 pub mod ibl;
+pub mod layers;
 pub mod lobes;
 pub mod tonemap;
 pub mod transmission;
