@@ -27,7 +27,6 @@ use sections::{
     checks, gpu as gpu_section, ibl as ibl_section, layers as layers_section, lobes,
     tonemap as tonemap_section,
 };
-use sections::{checks, gpu as gpu_section, ibl as ibl_section, lobes, tonemap as tonemap_section};
 use std::error::Error;
 use std::path::{Path, PathBuf};
 use std::time::Instant;
