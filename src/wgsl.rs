@@ -116,6 +116,15 @@ pub const IBL: &str = include_str!("../wgsl/ibl.wgsl");
 /// visible-normal pdfs and GGX reflection pdf. Needs [`GGX`] and [`BECKMANN`] before it.
 pub const SAMPLING: &str = include_str!("../wgsl/sampling.wgsl");
 
+/// The twin of `brdf::rough_dielectric::half_vector`, the generalized half vector of
+/// reflection and refraction (the BSDF, its pdf and samplers have no twins yet).
+pub const ROUGH_DIELECTRIC: &str = include_str!("../wgsl/rough_dielectric.wgsl");
+
+/// The twins of `brdf::transmission::Volume`'s Beer-Lambert transmittance and attenuation
+/// coefficient (`transmission_Volume_transmittance`, taking the constructor's thickness,
+/// attenuation colour and distance first).
+pub const TRANSMISSION: &str = include_str!("../wgsl/transmission.wgsl");
+
 /// [`COMMON`] followed by every family, each after the families it needs: one module defining
 /// every twin.
 pub const ALL: &str = concat!(
@@ -132,6 +141,8 @@ pub const ALL: &str = concat!(
     include_str!("../wgsl/material.wgsl"),
     include_str!("../wgsl/ibl.wgsl"),
     include_str!("../wgsl/sampling.wgsl"),
+    include_str!("../wgsl/rough_dielectric.wgsl"),
+    include_str!("../wgsl/transmission.wgsl"),
 );
 
 /// One family's WGSL, with the families it calls into.
@@ -207,5 +218,15 @@ pub const FAMILIES: &[Family] = &[
         name: "sampling",
         source: SAMPLING,
         needs: &["ggx", "beckmann"],
+    },
+    Family {
+        name: "rough_dielectric",
+        source: ROUGH_DIELECTRIC,
+        needs: &[],
+    },
+    Family {
+        name: "transmission",
+        source: TRANSMISSION,
+        needs: &[],
     },
 ];

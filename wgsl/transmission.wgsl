@@ -1,0 +1,52 @@
+// brdf: glTF volume attenuation, the twins of the Rust module `transmission`
+// (`transmission::Volume`'s methods, taking the constructor's thickness, attenuation colour and
+// attenuation distance first). Needs common.wgsl.
+
+// The largest path-length ratio x / d used: ratio * ln c stays finite for every c >= 2^-149
+// (|ln c| < 104, 1e36 * 104 < f32's largest value), and exp of anything below -104 is 0 in
+// f32, so capping changes no result.
+const BRDF_RATIO_MAX: f32 = 1e36;
+
+// One channel of the Beer-Lambert transmittance c^ratio = exp(ratio ln c); the ends the Rust
+// kernel selects (x = 0 or c = 1 give 1, c = 0 with x > 0 gives 0) are selected here too, since
+// ln 0 has no WGSL value.
+fn brdf_beer_lambert(c: f32, ratio: f32, path_length: f32) -> f32 {
+    let v = exp(min(ratio, BRDF_RATIO_MAX) * log(max(c, 1.17549435e-38)));
+    let one = select(v, 1.0, (path_length == 0.0) | (c == 1.0));
+    return select(one, 0.0, (c == 0.0) & (path_length > 0.0));
+}
+
+// Beer-Lambert transmittance T(x) = c^(x / d) = exp(-sigma x) per channel
+// (KHR_materials_volume, "Attenuation"), c the attenuation colour, d the attenuation distance.
+// path_length in [0, MAX].
+fn transmission_Volume_transmittance(
+    thickness: f32, attenuation_color_r: f32, attenuation_color_g: f32,
+    attenuation_color_b: f32, attenuation_distance: f32, path_length: f32,
+) -> vec3<f32> {
+    let ratio = path_length / attenuation_distance;
+    return vec3<f32>(
+        brdf_beer_lambert(attenuation_color_r, ratio, path_length),
+        brdf_beer_lambert(attenuation_color_g, ratio, path_length),
+        brdf_beer_lambert(attenuation_color_b, ratio, path_length),
+    );
+}
+
+// One channel of sigma = -ln(c) / d, in [0, MAX]; c = 0 (ln 0 = -inf, no WGSL value) gives MAX
+// as the Rust kernel's cap does.
+fn brdf_attenuation(c: f32, d: f32) -> f32 {
+    let s = max(min(-log(max(c, 1.17549435e-38)) / d, BRDF_F32_MAX), 0.0);
+    return select(s, BRDF_F32_MAX, c == 0.0);
+}
+
+// The attenuation coefficient sigma = -ln(c) / d per channel (KHR_materials_volume,
+// "Attenuation"), capped at the largest finite f32.
+fn transmission_Volume_attenuation_coefficient(
+    thickness: f32, attenuation_color_r: f32, attenuation_color_g: f32,
+    attenuation_color_b: f32, attenuation_distance: f32,
+) -> vec3<f32> {
+    return vec3<f32>(
+        brdf_attenuation(attenuation_color_r, attenuation_distance),
+        brdf_attenuation(attenuation_color_g, attenuation_distance),
+        brdf_attenuation(attenuation_color_b, attenuation_distance),
+    );
+}
