@@ -122,7 +122,8 @@ pub const ROUGH_DIELECTRIC: &str = include_str!("../wgsl/rough_dielectric.wgsl")
 
 /// The twins of `brdf::transmission::Volume`'s Beer-Lambert transmittance and attenuation
 /// coefficient (`transmission_Volume_transmittance`, taking the constructor's thickness,
-/// attenuation colour and distance first).
+/// attenuation colour and distance first), and of `transmission::thin_walled_btdf`. Needs
+/// [`GGX`] before it.
 pub const TRANSMISSION: &str = include_str!("../wgsl/transmission.wgsl");
 
 /// [`COMMON`] followed by every family, each after the families it needs: one module defining
@@ -227,6 +228,6 @@ pub const FAMILIES: &[Family] = &[
     Family {
         name: "transmission",
         source: TRANSMISSION,
-        needs: &[],
+        needs: &["ggx"],
     },
 ];

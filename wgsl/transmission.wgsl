@@ -1,6 +1,6 @@
 // brdf: glTF volume attenuation, the twins of the Rust module `transmission`
 // (`transmission::Volume`'s methods, taking the constructor's thickness, attenuation colour and
-// attenuation distance first). Needs common.wgsl.
+// attenuation distance first), and the thin-walled BTDF. Needs common.wgsl and ggx.wgsl.
 
 // The largest path-length ratio x / d used: ratio * ln c stays finite for every c >= 2^-149
 // (|ln c| < 104, 1e36 * 104 < f32's largest value), and exp of anything below -104 is 0 in
@@ -49,4 +49,35 @@ fn transmission_Volume_attenuation_coefficient(
         brdf_attenuation(attenuation_color_g, attenuation_distance),
         brdf_attenuation(attenuation_color_b, attenuation_distance),
     );
+}
+
+// The thin-walled BTDF of KHR_materials_transmission (its implementation notes): the GGX lobe
+// at the mirrored direction wi' = (wi.x, wi.y, -wi.z), h_T = normalize(wo + wi'),
+// f = D(h_T) G1(wo) G1(wi) / (4 |wo.z| |wi.z|), with the steps h_T.wi' > 0, h_T.wo > 0, wo
+// above and wi below the surface (the Rust kernel's doc says why the steps read wi'). Needs
+// ggx.wgsl.
+fn transmission_thin_walled_btdf(
+    alpha_x: f32, alpha_y: f32, wo_x: f32, wo_y: f32, wo_z: f32, wi_x: f32, wi_y: f32, wi_z: f32,
+) -> f32 {
+    let x = wo_x + wi_x;
+    let y = wo_y + wi_y;
+    let z = wo_z - wi_z;
+    let len2 = x * x + y * y + z * z;
+    // The floor keeps the unused branch of the select finite where the sum is zero.
+    let s = 1.0 / sqrt(max(len2, 1e-30));
+    let live_h = len2 > 0.0;
+    let h_x = select(0.0, x * s, live_h);
+    let h_y = select(0.0, y * s, live_h);
+    let h_z = select(1.0, z * s, live_h);
+    let steps = (h_x * wi_x + h_y * wi_y - h_z * wi_z > 0.0)
+        & (h_x * wo_x + h_y * wo_y + h_z * wo_z > 0.0);
+    let live = steps & (wo_z > 0.0) & (wi_z < 0.0);
+    let g = ggx_Ggx_g1(alpha_x, alpha_y, wo_x, wo_y, wo_z)
+        * ggx_Ggx_g1(alpha_x, alpha_y, wi_x, wi_y, wi_z);
+    // 1 / p capped at the largest f32, as the Rust kernel caps it; the floor keeps the unused
+    // branch of the select within the divisions WGSL promises an accuracy for.
+    let p = 4.0 * abs(wo_z) * abs(wi_z);
+    let inv = select(BRDF_F32_MAX, min(1.0 / max(p, 1.17549435e-38), BRDF_F32_MAX), p >= 1.17549435e-38);
+    let f = min(min(ggx_Ggx_d(alpha_x, alpha_y, h_x, h_y, h_z) * g, BRDF_F32_MAX) * inv, BRDF_F32_MAX);
+    return select(0.0, f, live);
 }

@@ -423,10 +423,6 @@ pub const NO_TWIN: &[(&str, &str)] = &[
         "a sampler: the samplers have no twins yet",
     ),
     (
-        "transmission::thin_walled_btdf",
-        "not written yet: the mirrored-half-vector GGX lobe (the volume's terms have twins)",
-    ),
-    (
         "transmission::dielectric_bsdf",
         "not written yet: composes the rough dielectric BSDF, which has no twin yet",
     ),
