@@ -16,7 +16,8 @@
 //! [`COMMON`] must come first, then each family after the families it calls into
 //! ([`Family::needs`]: [`COOK_TORRANCE`] needs [`GGX`], [`FRESNEL`] and [`BECKMANN`],
 //! [`DIFFUSE`] needs [`FRESNEL`], [`MATERIAL`] needs [`GGX`], [`FRESNEL`], [`BECKMANN`] and
-//! [`COOK_TORRANCE`], [`SAMPLING`] needs [`GGX`] and [`BECKMANN`]). No
+//! [`COOK_TORRANCE`], [`SAMPLING`] needs [`GGX`] and [`BECKMANN`], [`TRANSMISSION`] needs
+//! [`GGX`]). No
 //! family defines a name another family defines, so any such subset concatenated after
 //! [`COMMON`] is one valid WGSL module:
 //!
