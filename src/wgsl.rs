@@ -17,9 +17,8 @@
 //! ([`Family::needs`]: [`COOK_TORRANCE`] needs [`GGX`], [`FRESNEL`] and [`BECKMANN`],
 //! [`DIFFUSE`] needs [`FRESNEL`], [`MATERIAL`] needs [`GGX`], [`FRESNEL`], [`BECKMANN`] and
 //! [`COOK_TORRANCE`], [`SAMPLING`] needs [`GGX`] and [`BECKMANN`], [`TRANSMISSION`] needs
-//! [`GGX`]). No
-//! family defines a name another family defines, so any such subset concatenated after
-//! [`COMMON`] is one valid WGSL module:
+//! [`GGX`]). No family defines a name another family defines, so any such subset concatenated
+//! after [`COMMON`] is one valid WGSL module:
 //!
 //! ```
 //! let source = [brdf::wgsl::COMMON, brdf::wgsl::GGX, brdf::wgsl::FRESNEL].concat();
