@@ -17,9 +17,8 @@
 //! ([`Family::needs`]: [`COOK_TORRANCE`] needs [`GGX`], [`FRESNEL`] and [`BECKMANN`],
 //! [`DIFFUSE`] needs [`FRESNEL`], [`MATERIAL`] needs [`GGX`], [`FRESNEL`], [`BECKMANN`] and
 //! [`COOK_TORRANCE`], [`SAMPLING`] needs [`GGX`] and [`BECKMANN`], [`LAYERS`] needs [`GGX`]
-//! and [`FRESNEL`]). No
-//! family defines a name another family defines, so any such subset concatenated after
-//! [`COMMON`] is one valid WGSL module:
+//! and [`FRESNEL`], [`TRANSMISSION`] needs [`GGX`]). No family defines a name another family
+//! defines, so any such subset concatenated after [`COMMON`] is one valid WGSL module:
 //!
 //! ```
 //! let source = [brdf::wgsl::COMMON, brdf::wgsl::GGX, brdf::wgsl::FRESNEL].concat();
@@ -124,6 +123,16 @@ pub const SAMPLING: &str = include_str!("../wgsl/sampling.wgsl");
 /// width, direction and bent reflection vector. Needs [`GGX`] and [`FRESNEL`] before it.
 pub const LAYERS: &str = include_str!("../wgsl/layers.wgsl");
 
+/// The twin of `brdf::rough_dielectric::half_vector`, the generalized half vector of
+/// reflection and refraction (the BSDF, its pdf and samplers have no twins yet).
+pub const ROUGH_DIELECTRIC: &str = include_str!("../wgsl/rough_dielectric.wgsl");
+
+/// The twins of `brdf::transmission::Volume`'s Beer-Lambert transmittance and attenuation
+/// coefficient (`transmission_Volume_transmittance`, taking the constructor's thickness,
+/// attenuation colour and distance first), and of `transmission::thin_walled_btdf`. Needs
+/// [`GGX`] before it.
+pub const TRANSMISSION: &str = include_str!("../wgsl/transmission.wgsl");
+
 /// [`COMMON`] followed by every family, each after the families it needs: one module defining
 /// every twin.
 pub const ALL: &str = concat!(
@@ -141,6 +150,8 @@ pub const ALL: &str = concat!(
     include_str!("../wgsl/ibl.wgsl"),
     include_str!("../wgsl/sampling.wgsl"),
     include_str!("../wgsl/layers.wgsl"),
+    include_str!("../wgsl/rough_dielectric.wgsl"),
+    include_str!("../wgsl/transmission.wgsl"),
 );
 
 /// One family's WGSL, with the families it calls into.
@@ -221,5 +232,15 @@ pub const FAMILIES: &[Family] = &[
         name: "layers",
         source: LAYERS,
         needs: &["ggx", "fresnel"],
+    },
+    Family {
+        name: "rough_dielectric",
+        source: ROUGH_DIELECTRIC,
+        needs: &[],
+    },
+    Family {
+        name: "transmission",
+        source: TRANSMISSION,
+        needs: &["ggx"],
     },
 ];

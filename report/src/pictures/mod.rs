@@ -7,6 +7,7 @@
 //! - `scenes.rs`: the sphere charts (material chart, multiple scattering, the single-sample
 //!   image-light bug, Oren-Nayar, Phong, the white furnace) and the tonemap scene.
 //! - `figures.rs`: the plots (D, G1, Fresnel, albedo against roughness).
+//! - `iridescence.rs`: the thin film's colour strips over thickness.
 //!
 //! [`write_all`] writes them into the report folder and the report's markdown section;
 //! [`docs_material_chart`] and [`docs_pareto`] render the small copies under `docs/` that
@@ -15,6 +16,7 @@
 mod env;
 mod figures;
 pub mod hdr;
+mod iridescence;
 mod render;
 mod scenes;
 
@@ -203,7 +205,7 @@ pub fn write_all(dir: &Path, opt: &Options) -> Res<Vec<String>> {
     outln!("### Plots\n");
     let quick = opt.quick;
     type Plot<'a> = Box<dyn FnOnce() -> Res<String> + Send + 'a>;
-    let plots: [(&str, Plot); 4] = [
+    let plots: [(&str, Plot); 5] = [
         (
             "GGX's long tail against Beckmann's fast fall-off, at equal alpha.",
             Box::new(|| figures::ndf(dir)),
@@ -221,6 +223,15 @@ pub fn write_all(dir: &Path, opt: &Options) -> Res<Vec<String>> {
             "Directional albedo (`brdf::integrate::directional_albedo`) against roughness: \
              what each lobe loses or creates.",
             Box::new(move || figures::albedo_vs_roughness(dir, quick)),
+        ),
+        (
+            "Thin-film iridescence over film thickness (0 to 1200 nm) from air: \
+             `iridescence::dielectric` (film n = 1.33 on glass, n = 1.5) and `iridescence::conductor` (film n = 2.0 on \
+             1.1 + 6.8i) at 0, 45 and 70 degrees, CIE XYZ to linear Rec.709 by \
+             `XYZ_TO_REC709`, each row scaled so its brightest channel is 1 (the factor in its \
+             caption), sRGB-encoded. Thickness 0 is the bare base; the fringes \
+             shift to thinner films as the view tilts.",
+            Box::new(|| iridescence::strip(dir)),
         ),
     ];
     let drawn: Vec<(&str, Result<String, String>)> = std::thread::scope(|sc| {
