@@ -135,7 +135,7 @@ pub fn markdown(rows: &[(Case, Measurement)]) -> String {
             "Max error in ULPs of the correctly rounded result (MPFR at 256 bits and more, from each function's published definition), counting results >= 1e-30 (f32) and >= 1e-300 (f64); smaller ones are checked to be within that absolute threshold, overflowing ones to be capped at the largest finite value. ",
         );
         s.push_str(
-            "Each figure is the largest error the deep search found over the function's whole documented domain: fresh random points (both sides of every internal branch and both ends of every argument's range) and a hill-climb from the worst of them, across runs with different seeds. The points where it was reached are committed (`oracle/hardest.txt`) and the table is measured on them, so it reads the same on every run; every CI run measures them again beside a few thousand fresh points and a short climb, against the bounds in `oracle/src/bounds.rs` (each figure plus 0.15 ULP, rounded up to 0.1).\n\n",
+            "Each figure is the largest error the deep search found over the function's whole documented domain: fresh random points (both sides of every internal branch and both ends of every argument's range) and a hill-climb from the worst of them, across runs with different seeds. The points where it was reached are committed (`oracle/hardest.txt`) and the table is measured on them, so it reads the same on every run; every CI run measures them again beside a few thousand fresh points and a short climb, against the bounds in `oracle/src/bounds.rs` (each figure plus 0.3 ULP, rounded up to 0.1).\n\n",
         );
         s.push_str(&format!(
             "Deep search and record: `{DEEP_COMMAND}`; then regenerate this file: `{BLESS_COMMAND}` (each once more with `RUSTFLAGS=\"{FMA_FLAGS}\"` for the FMA section).\n\n"
@@ -204,14 +204,23 @@ pub fn with_section(doc: &str, table: &str) -> String {
     }
 }
 
-/// The bound a max score suggests: the score plus 0.15 ULP, rounded up to the next 0.1
+/// The margin a bound keeps above the deep search's figure, in ULPs ([`suggested_bound`]).
+///
+/// Fresh points of ordinary runs found errors up to 0.24 ULP above a deep search's figure
+/// (`phong::normalized` on f32: 1.50 searched, 1.74 found; `tonemap::agx_threejs` on f64:
+/// 0.55 and 0.78; `fresnel::schlick` on f32: 3.05 and 3.23), so 0.15 was too thin. With the
+/// rounding up to 0.1 the bound stays below the score plus 0.4, under the half ULP that one
+/// more rounding adds, so `tests/harness.rs` still proves every bound tight.
+pub const MARGIN: f64 = 0.3;
+
+/// The bound a max score suggests: the score plus [`MARGIN`], rounded up to the next 0.1
 /// (below the half ULP one more rounding adds, so the bound stays tight), and no more than
 /// [`bounds::TARGET`] for a score below it (the promise, and still within half an ULP of
 /// the score when it is above 3.5).
 #[must_use]
 pub fn suggested_bound(max_ulp: f64) -> f64 {
-    // The 1e-9 keeps a score like 3.25 (+ 0.15 = 3.4000000000000004 in binary) at 3.4.
-    let b = ((max_ulp + 0.15) * 10.0 - 1e-9).ceil() / 10.0;
+    // The 1e-9 keeps a score like 3.1 (+ 0.3 = 3.4000000000000004 in binary) at 3.4.
+    let b = ((max_ulp + MARGIN) * 10.0 - 1e-9).ceil() / 10.0;
     if max_ulp < bounds::TARGET {
         b.min(bounds::TARGET)
     } else {
@@ -231,7 +240,7 @@ pub fn suggested_bounds(rows: &[(Case, Measurement)]) -> String {
         let cur = bounds::bound(case.name);
         // An ill-conditioned row's score approaches 0.5 - 8 / 2 = -3.5 for any kernel that
         // rounds its result (half an ulp where kappa is just above 8), so a lower figure only
-        // says the search drew no such point: its bound is at least that of -3.55 (-3.4).
+        // says the search drew no such point: its bound is at least that of -3.55 (-3.2).
         let ill = case.name.ends_with(ILL_CONDITIONED);
         let f = |st: &Stats| {
             suggested_bound(if ill {
