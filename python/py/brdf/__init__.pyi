@@ -4,7 +4,7 @@
 
 from typing import Any
 
-from . import beckmann, color, cook_torrance, diffuse, engine, frame, fresnel, ggx, ibl, lights, material, microfacet, phong, sampling, tonemap, vec3
+from . import beckmann, color, cook_torrance, diffuse, engine, frame, fresnel, ggx, ibl, iridescence, layers, lights, material, microfacet, phong, rough_dielectric, sampling, tonemap, transmission, vec3
 from . import integrate
 from ._kernels import Parameters as Parameters
 

@@ -76,6 +76,14 @@ def ggx_conductor_rgb_fast(n_dot_v: npt.ArrayLike, n_dot_l: npt.ArrayLike, n_dot
     """Rough conductor, GGX, RGB, working precision (D_GGX, conductor_fast), Cook and Torrance 1982; Guy and Agopian 2018."""
     ...
 
+def ggx_conductor_local(wo_x: npt.ArrayLike, wo_y: npt.ArrayLike, wo_z: npt.ArrayLike, wi_x: npt.ArrayLike, wi_y: npt.ArrayLike, wi_z: npt.ArrayLike, alpha: npt.ArrayLike, eta: npt.ArrayLike, k: npt.ArrayLike, *, dtype: npt.DTypeLike = None, lanes: bool = True, threads: bool = True, check: bool = False) -> Any:
+    """Rough conductor, GGX, one channel, from the directions (D from h's components), Walter et al. 2007; Born and Wolf 14.2."""
+    ...
+
+def ggx_conductor_local_fast(wo_x: npt.ArrayLike, wo_y: npt.ArrayLike, wo_z: npt.ArrayLike, wi_x: npt.ArrayLike, wi_y: npt.ArrayLike, wi_z: npt.ArrayLike, alpha: npt.ArrayLike, eta: npt.ArrayLike, k: npt.ArrayLike, *, dtype: npt.DTypeLike = None, lanes: bool = True, threads: bool = True, check: bool = False) -> Any:
+    """Rough conductor, GGX, one channel, from the directions, working precision, Walter et al. 2007; Born and Wolf 14.2."""
+    ...
+
 class cook_torrance_ggx_schlick_rgb_result(NamedTuple):
     f_r: Any
     f_g: Any
