@@ -142,7 +142,19 @@ pub fn write_all(dir: &Path, opt: &Options) -> Res<Vec<String>> {
             "furnace.png",
             "White furnace (radiance 1 everywhere, shown at half exposure, no tonemapping): \
              darker than the background is energy lost, brighter is energy created. The \
-             compensated GGX and EON all but vanish; the glTF metal loses what GGX loses.",
+             compensated GGX and EON all but vanish; the glTF metal loses what GGX loses. \
+             The layered white metal under a full clearcoat (coat as rough as the base) loses \
+             GGX's share and more without compensation; with it the sphere vanishes facing the \
+             view (albedo 0.97 to 1.00 at n.v = 1) but keeps a dark rim (0.17 to 0.68 at n.v = \
+             0.02): the extension's coat takes 1 - F_coat(n.v) away from the base and nothing \
+             returns it, a loss of the layering that compensation does not touch. The rough \
+             glass integrates reflection and transmission over the whole sphere, the \
+             environment behind seen through the surface; inside a clear body in a furnace the \
+             radiance is eta^2 (radiance / n^2 is what travels unchanged), so each pixel is the \
+             BSDF's importance albedo and a correct sphere vanishes. It nearly does: 0.93 to 1.00 \
+             at roughness 0.2 (lowest at the rim), 0.70 to 0.89 at roughness 1, the light lost between microfacets \
+             by single scattering (no compensation for glass here); lit by radiance 1 inside \
+             instead of eta^2 it would show about R + T / 2.25, a dark sphere.",
             Box::new(move || scenes::furnace_chart(cell)),
         ),
     ];

@@ -4,9 +4,11 @@
 use brdf::diffuse;
 use brdf::ggx::Ggx;
 use brdf::ibl::{dfg, energy};
-use brdf::integrate::directional_albedo_with;
+use brdf::integrate::{directional_albedo_sphere, directional_albedo_with};
+use brdf::layers::layered::Layered;
 use brdf::material::MetallicRoughness;
 use brdf::microfacet::alpha_from_perceptual;
+use brdf::rough_dielectric::{self, Transport};
 use brdf::tonemap::Operator;
 use brdf::{ShadingPoint, V3, cook_torrance, fresnel, phong};
 use core::f32::consts::PI;
@@ -305,43 +307,92 @@ pub fn phong_chart(cell: usize) -> Chart {
     }
 }
 
-/// A BRDF in the local frame (wo, wi), f64, for the furnace.
-type Brdf = Box<dyn Fn(V3<f64>, V3<f64>) -> f64>;
+/// The directional albedo of a furnace material at a view direction (local frame), f64.
+type Albedo = Box<dyn Fn(V3<f64>) -> f64>;
 
-/// The BRDF of a furnace row at a perceptual roughness; `None` for an invalid one.
-type MakeBrdf = fn(f64) -> Option<Brdf>;
+/// The albedo of a furnace row at a perceptual roughness; `None` for an invalid one.
+type MakeAlbedo = fn(f64) -> Option<Albedo>;
 
-/// Rows of the white furnace: a name and, per roughness column, the BRDF. The layered and
-/// transmissive materials join here as rows when their modules land (a transmissive row
-/// needs the whole sphere of directions: integrate its BTDF with `brdf::integrate::hemisphere`
-/// over the lower hemisphere and add it to the albedo).
-fn furnace_rows() -> Vec<(&'static str, MakeBrdf)> {
+/// The albedo of a BRDF: its integral over the upper hemisphere
+/// ([`directional_albedo_with`]).
+fn hemisphere(f: impl Fn(V3<f64>, V3<f64>) -> f64 + 'static) -> Option<Albedo> {
+    Some(Box::new(move |wo| {
+        directional_albedo_with(wo, &f, &super::ALBEDO_TOL).value
+    }))
+}
+
+/// Index of refraction of the glass row.
+const GLASS_ETA: f64 = 1.5;
+
+/// The layered white material of the furnace: a white metal under a full clearcoat as rough
+/// as the base.
+fn layered_white(r: f64, compensate: bool) -> Option<Albedo> {
+    let m = Layered::new(V3::splat(1.0), 1.0, r)
+        .ok()?
+        .with_clearcoat(1.0, r)
+        .ok()?
+        .with_compensation(compensate);
+    hemisphere(move |o, i| m.eval(o, i).y)
+}
+
+/// Rows of the white furnace: a name and, per roughness column, the albedo at a view
+/// direction.
+fn furnace_rows() -> Vec<(&'static str, MakeAlbedo)> {
     vec![
         ("GGX conductor, F = 1, single scattering", |r| {
             let g = Ggx::isotropic(alpha_from_perceptual(r)).ok()?;
-            Some(Box::new(move |o, i| cook_torrance::eval(&g, o, i, |_| 1.0)))
+            hemisphere(move |o, i| cook_torrance::eval(&g, o, i, |_| 1.0))
         }),
         ("GGX conductor, F = 1, + Kulla-Conty", |r| {
             let a = alpha_from_perceptual(r);
             let g = Ggx::isotropic(a).ok()?;
-            Some(Box::new(move |o, i| {
+            hemisphere(move |o, i| {
                 cook_torrance::eval(&g, o, i, |_| 1.0) + energy::kulla_conty_ggx(o.z, i.z, a, 1.0)
-            }))
+            })
         }),
         ("glTF material, white metal", |r| {
             let m = MetallicRoughness::new(V3::splat(1.0), 1.0, r).ok()?;
-            Some(Box::new(move |o, i| m.eval(o, i).y))
+            hemisphere(move |o, i| m.eval(o, i).y)
         }),
+        ("layered: white metal + clearcoat 1", |r| {
+            layered_white(r, false)
+        }),
+        ("layered: the same + per-lobe compensation", |r| {
+            layered_white(r, true)
+        }),
+        (
+            "rough glass (GGX, eta 1.5): reflection + transmission, whole sphere",
+            |r| {
+                // The view outside, the glass below: the integral over the whole sphere, the
+                // environment behind seen through the interface. Inside a non-absorbing body in a
+                // furnace the radiance is eta^2 (radiance / n^2 is what travels unchanged), which
+                // turns the radiance BTDF's 1 / eta^2 into the importance form: the pixel is the
+                // importance albedo, 1 for a surface that keeps all the light.
+                let g = Ggx::isotropic(alpha_from_perceptual(r)).ok()?;
+                Some(Box::new(move |wo: V3<f64>| {
+                    let s2 = (wo.x * wo.x + wo.y * wo.y) / (GLASS_ETA * GLASS_ETA);
+                    let refracted = V3::new(
+                        -wo.x / GLASS_ETA,
+                        -wo.y / GLASS_ETA,
+                        -(1.0 - s2).max(0.0).sqrt(),
+                    );
+                    let f =
+                        |o, i| rough_dielectric::eval(&g, o, i, GLASS_ETA, Transport::Importance);
+                    directional_albedo_sphere(wo, f, &[refracted]).value
+                }))
+            },
+        ),
         ("EON diffuse, rho = 1 (sigma = roughness)", |r| {
             let e = diffuse::Eon::new(1.0, r).ok()?;
-            Some(Box::new(move |o, i| e.eval(o, i)))
+            hemisphere(move |o, i| e.eval(o, i))
         }),
     ]
 }
 
 /// White furnace: every sphere lit by radiance 1 from everywhere, so each pixel shows the
-/// directional albedo at its n.v ([`directional_albedo_with`], tabulated at 16 values of n.v and
-/// read linearly). A sphere that neither loses nor creates energy vanishes.
+/// directional albedo at its n.v (tabulated at 16 values of n.v and read linearly): over the
+/// hemisphere for the opaque rows, over the whole sphere for the glass
+/// ([`directional_albedo_sphere`]). A sphere that neither loses nor creates energy vanishes.
 pub fn furnace_chart(cell: usize) -> Chart {
     let rough = [0.2f64, 0.4, 0.6, 0.8, 1.0];
     let rows = furnace_rows();
@@ -353,13 +404,12 @@ pub fn furnace_chart(cell: usize) -> Chart {
             rough
                 .iter()
                 .map(|&r| {
-                    let Some(f) = make(r) else {
+                    let Some(e) = make(r) else {
                         return [f64::NAN; NODES];
                     };
                     core::array::from_fn(|j| {
                         let m = mu(j);
-                        let wo = V3::new((1.0 - m * m).sqrt(), 0.0, m);
-                        directional_albedo_with(wo, &f, &super::ALBEDO_TOL).value
+                        e(V3::new((1.0 - m * m).sqrt(), 0.0, m))
                     })
                 })
                 .collect()
