@@ -44,6 +44,18 @@
 //! coat on top the albedo stays at most 1 (measured max 0.976 over the test's grid); the
 //! furnace is not claimed there (the extensions' layering is not energy conserving).
 //!
+//! # Transmission (feature `transmission`)
+//! [`with_transmission`](Layered::with_transmission) follows KHR_materials_transmission with
+//! a thin-walled volume (KHR_materials_volume's thickness 0): in the dielectric base the
+//! diffuse lobe is mixed with the transmission lobe by the factor t,
+//! mix(kd baseColor / pi, kd baseColor btdf, t), the btdf being the base GGX lobe mirrored
+//! through the surface plane ([`crate::transmission::thin_walled_btdf`]) and kd read at its
+//! half vector h_T. wi below the surface then sees only that lobe, times the view side's
+//! sheen scaling 1 - max(sheenColor) E(n.v) and coat attenuation 1 - clearcoat F_coat(n_c.v);
+//! eval, pdf and sample cover the whole sphere. The sampler gives the transmission lobe the
+//! weight (coat through) s_v t mean(kd baseColor), taken from the cosine lobes, and draws it
+//! as a base specular sample mirrored through the surface plane.
+//!
 //! # Sampling
 //! One-sample lobe selection by the lobes' estimated albedos at wo: coat clearcoat
 //! F_coat(n_c.v), then, scaled by what the coat lets through, the base specular (the mean of
@@ -104,6 +116,8 @@ pub struct Layered<T> {
     aniso_cos: T,
     aniso_sin: T,
     compensate: bool,
+    #[cfg(feature = "transmission")]
+    transmission: T,
 }
 
 /// Largest |length - 1| accepted for the coat normal: a shader's `normalize` in f16 is
@@ -133,6 +147,8 @@ impl<T: Real> Layered<T> {
             aniso_cos: T::ONE,
             aniso_sin: T::ZERO,
             compensate: false,
+            #[cfg(feature = "transmission")]
+            transmission: T::ZERO,
         }
     }
 
@@ -189,6 +205,22 @@ impl<T: Real> Layered<T> {
             strength,
             aniso_cos: d.x,
             aniso_sin: d.y,
+            ..self
+        })
+    }
+
+    /// KHR_materials_transmission, thin-walled (`KHR_materials_volume` with thickness 0): the
+    /// transmission factor t in [0, 1] (`"transmission"`), else [`ParamError`]. The dielectric
+    /// base's diffuse lobe kd baseColor / pi is scaled by 1 - t and, for wi below the surface,
+    /// the transmission lobe kd(h_T) t baseColor btdf is added, btdf the base GGX mirrored
+    /// through the surface plane ([`crate::transmission::thin_walled_btdf`], h_T its half
+    /// vector), seen through the layers above (module docs, "Transmission"). Metals do not
+    /// transmit (kd carries 1 - metallic). t = 0 is the material without it, bit for bit.
+    #[cfg(feature = "transmission")]
+    pub fn with_transmission(self, transmission: T) -> Result<Self, ParamError> {
+        require::<T>(in_unit(transmission), "transmission", "in [0, 1]")?;
+        Ok(Self {
+            transmission,
             ..self
         })
     }
@@ -305,8 +337,14 @@ impl<T: Real> Layered<T> {
             let ms_m = kulla_conty_ggx_rgb(wo.z, wi.z, a_eff, favg_m);
             spec_ms = ms_d * (T::ONE - m) + ms_m * m;
         }
+        // KHR_materials_transmission moves the fraction t of the diffuse lobe below the
+        // surface; t = 0 multiplies by exactly 1, leaving the base bit for bit.
+        #[cfg(feature = "transmission")]
+        let keep = T::ONE - self.transmission;
+        #[cfg(not(feature = "transmission"))]
+        let keep = T::ONE;
         let channel = |fc: T, kc: T, bc: T, ms: T| {
-            let value = fc.mul_add(dv, kc * bc * T::FRAC_1_PI) + ms;
+            let value = fc.mul_add(dv, kc * bc * T::FRAC_1_PI * keep) + ms;
             above_horizon(wo.z, wi.z, value.min(T::MAX))
         };
         let base_f = V3::new(
@@ -337,14 +375,69 @@ impl<T: Real> Layered<T> {
             coat += kulla_conty_ggx(cc.n_dot_v, cc.n_dot_l, self.coat_alpha, favg);
         }
         let out = clearcoat::layer(sheened, coat, self.clearcoat, f_coat);
-        let fin = |x: T| finite_dirs(wo, wi, above_horizon(wo.z, wi.z, x));
+        let out = out.map(|x| above_horizon(wo.z, wi.z, x));
+        #[cfg(feature = "transmission")]
+        let out = self.with_transmitted(out, wo, wi, e_v, f_coat);
+        let fin = |x: T| finite_dirs(wo, wi, x);
         V3::new(fin(out.x), fin(out.y), fin(out.z))
     }
 
+    /// `reflected` where wi is above the surface; below it (wo above, t > 0) the thin-walled
+    /// transmission lobe kd(h_T) t baseColor btdf, dimmed by the sheen's view-side scaling
+    /// 1 - max(sheenColor) E(n.v) and the coat's 1 - clearcoat F_coat(n_c.v) (the light leaves
+    /// through both layers on the view's side).
+    #[cfg(feature = "transmission")]
+    #[inline]
+    fn with_transmitted(&self, reflected: V3<T>, wo: V3<T>, wi: V3<T>, e_v: T, f_coat: T) -> V3<T> {
+        let t = self.transmission;
+        let b = &self.base;
+        let btdf = crate::transmission::thin_walled_btdf(
+            &self.base_ggx(),
+            self.aniso_local(wo),
+            self.aniso_local(wi),
+        );
+        let h_t = (wo + V3::new(wi.x, wi.y, -wi.z)).normalize_or(V3::unit_z());
+        let (_, kd) = fresnel_and_kd(
+            schlick_weights(wo.dot(h_t).clamp(T::ZERO, T::ONE)),
+            b.base_color(),
+            b.metallic(),
+            b.dielectric_f0(),
+            b.dielectric_f90(),
+            b.coupling(),
+        );
+        let m = self.sheen_max();
+        let through = (T::ONE - self.clearcoat * f_coat) * (T::ONE - m * e_v) * t * btdf;
+        let live = t.simd_gt(T::ZERO) & wo.z.simd_gt(T::ZERO) & wi.z.simd_lt(T::ZERO);
+        let base = b.base_color();
+        let lobe = |kc: T, bc: T, r: T| T::select(live, (kc * bc * through).min(T::MAX), r);
+        V3::new(
+            lobe(kd.x, base.x, reflected.x),
+            lobe(kd.y, base.y, reflected.y),
+            lobe(kd.z, base.z, reflected.z),
+        )
+    }
+
+    /// max(sheenColor).
+    #[inline]
+    fn sheen_max(&self) -> T {
+        self.sheen_color
+            .x
+            .max(self.sheen_color.y)
+            .max(self.sheen_color.z)
+    }
+
     /// The lobe-selection probabilities at wo: (coat, base specular, cosine lobes), summing
-    /// to 1 (module docs, "Sampling"). NaN where a component of wo is NaN or infinite.
+    /// to 1 without transmission; with it, the transmission lobe takes the rest, 1 minus
+    /// their sum (module docs, "Sampling"). NaN where a component of wo is NaN or infinite.
     #[must_use]
     pub fn lobe_probabilities(&self, wo: V3<T>) -> V3<T> {
+        self.lobe_weights(wo).0
+    }
+
+    /// (coat, base specular, cosine lobes) and the transmission lobe's probability, summing
+    /// to 1.
+    #[inline]
+    fn lobe_weights(&self, wo: V3<T>) -> (V3<T>, T) {
         let b = &self.base;
         let mean = |c: V3<T>| (c.x + c.y + c.z) * T::splat(1.0 / 3.0);
         let (f, _) = fresnel_and_kd(
@@ -368,18 +461,21 @@ impl<T: Real> Layered<T> {
         );
         let w_coat = self.clearcoat * clearcoat::fresnel(self.coat_normal.dot(wo));
         let through = T::ONE - w_coat;
-        let m = self
-            .sheen_color
-            .x
-            .max(self.sheen_color.y)
-            .max(self.sheen_color.z);
+        let m = self.sheen_max();
         let e_v = sheen::albedo(wo.z, self.sheen_alpha);
         let s_v = T::ONE - m * e_v;
         let w_spec = through * s_v * mean(f);
         let base = b.base_color();
         let diffuse = V3::new(kd.x * base.x, kd.y * base.y, kd.z * base.z);
-        let w_cos = through * (m * e_v + s_v * mean(diffuse));
-        let sum = w_coat + w_spec + w_cos;
+        // The transmission lobe's share of the diffuse weight; t = 0 multiplies by exactly 1
+        // and adds exactly 0.
+        #[cfg(feature = "transmission")]
+        let t = self.transmission;
+        #[cfg(not(feature = "transmission"))]
+        let t = T::ZERO;
+        let w_cos = through * (m * e_v + s_v * (mean(diffuse) * (T::ONE - t)));
+        let w_trans = through * s_v * mean(diffuse) * t;
+        let sum = w_coat + w_spec + w_cos + w_trans;
         // Nothing reflects (a black, non-specular base without layers): any lobe will do.
         let empty = sum.simd_le(T::ZERO);
         let safe = T::select(empty, T::ONE, sum);
@@ -388,11 +484,15 @@ impl<T: Real> Layered<T> {
             T::select(empty, T::ZERO, w_spec / safe),
             T::select(empty, T::ONE, w_cos / safe),
         );
+        let p_trans = T::select(empty, T::ZERO, w_trans / safe);
         let bad = any_nonfinite3(wo);
-        V3::new(
-            nan_where(bad, p.x),
-            nan_where(bad, p.y),
-            nan_where(bad, p.z),
+        (
+            V3::new(
+                nan_where(bad, p.x),
+                nan_where(bad, p.y),
+                nan_where(bad, p.z),
+            ),
+            nan_where(bad, p_trans),
         )
     }
 
@@ -404,7 +504,7 @@ impl<T: Real> Layered<T> {
     /// A zero-length wo or wi gives 0; a NaN or infinite component of wo or wi gives NaN.
     #[must_use]
     pub fn pdf(&self, wo: V3<T>, wi: V3<T>) -> T {
-        let p = self.lobe_probabilities(wo);
+        let (p, p_trans) = self.lobe_weights(wo);
         let h = (wo + wi).normalize_or(V3::unit_z());
         let wo_dot_h = wo.dot(h);
         let spec = sampling::reflect_pdf(
@@ -422,6 +522,21 @@ impl<T: Real> Layered<T> {
         );
         let cos = sampling::cosine_hemisphere_pdf(wi);
         let pdf = p.x * coat + p.y * spec + p.z * cos;
+        // The transmission lobe: the base specular's density at wi mirrored through the
+        // surface plane (the sampler mirrors a specular sample); 0 without transmission.
+        let pdf = {
+            let mirrored = V3::new(wi.x, wi.y, -wi.z);
+            let h_t = (wo + mirrored).normalize_or(V3::unit_z());
+            let trans = sampling::reflect_pdf(
+                sampling::visible_normal_pdf(
+                    &self.base_ggx(),
+                    self.aniso_local(wo),
+                    self.aniso_local(h_t),
+                ),
+                wo.dot(h_t),
+            );
+            T::select(p_trans.simd_gt(T::ZERO), p_trans.mul_add(trans, pdf), pdf)
+        };
         let zero = crate::vec3::is_zero3(wo) | crate::vec3::is_zero3(wi);
         finite_dirs(wo, wi, T::select(zero, T::ZERO, pdf))
     }
@@ -434,19 +549,24 @@ impl<T: Real> Layered<T> {
     /// and pdf.
     #[must_use]
     pub fn sample(&self, wo: V3<T>, u1: T, u2: T) -> (V3<T>, T) {
-        let p = self.lobe_probabilities(wo);
+        let (p, p_trans) = self.lobe_weights(wo);
         let nan_u = u1.is_nan() | u2.is_nan();
         let u1 = u1.clamp(T::ZERO, T::ONE - T::EPSILON * T::HALF);
         let c1 = p.x;
         let c2 = p.x + p.y;
         // c2 can round just below 1 when the cosine lobes have probability 0: u1 above it
         // then still picks the specular lobe, never a lobe of probability 0.
+        let c3 = c2 + p.z;
+        let no_trans = p_trans.simd_le(T::ZERO);
         let is_coat = u1.simd_lt(c1);
-        let is_spec = !is_coat & (u1.simd_lt(c2) | p.z.simd_le(T::ZERO));
+        let is_spec = !is_coat & (u1.simd_lt(c2) | (p.z.simd_le(T::ZERO) & no_trans));
+        // Likewise the cosine lobes take u1 above c3 when transmission has probability 0.
+        let is_cos = !is_coat & !is_spec & (u1.simd_lt(c3) | no_trans);
         let below1 = |x: T| x.clamp(T::ZERO, T::ONE - T::EPSILON * T::HALF);
         let u_coat = below1(u1 / p.x);
         let u_spec = below1((u1 - c1) / p.y);
         let u_cos = below1((u1 - c2) / p.z);
+        let u_trans = below1((u1 - c3) / p_trans);
         let frame = Frame::from_normal(self.coat_normal);
         let wo_c = frame.to_local(wo);
         let (m_c, _) = sampling::ggx_vndf(&self.coat_ggx(), wo_c, u_coat, u2);
@@ -455,7 +575,14 @@ impl<T: Real> Layered<T> {
         let (m_a, _) = sampling::ggx_vndf(&self.base_ggx(), wo_a, u_spec, u2);
         let wi_spec = self.aniso_world(wo_a.mirror(m_a));
         let (wi_cos, _) = sampling::cosine_hemisphere(u_cos, u2);
-        let wi = V3::select(is_coat, wi_coat, V3::select(is_spec, wi_spec, wi_cos));
+        let (m_t, _) = sampling::ggx_vndf(&self.base_ggx(), wo_a, u_trans, u2);
+        let r = self.aniso_world(wo_a.mirror(m_t));
+        let wi_trans = V3::new(r.x, r.y, -r.z);
+        let wi = V3::select(
+            is_coat,
+            wi_coat,
+            V3::select(is_spec, wi_spec, V3::select(is_cos, wi_cos, wi_trans)),
+        );
         let bad = any_nonfinite3(wo) | nan_u;
         let wi = V3::new(
             nan_where(bad, wi.x),
