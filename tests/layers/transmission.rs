@@ -1,4 +1,5 @@
-//! The layered material with KHR_materials_transmission (thin-walled): transmission 0 is the
+//! The layered material with KHR_materials_transmission, thin-walled and volumetric
+//! (KHR_materials_volume): transmission 0 is the
 //! material without it bit for bit (eval, pdf, sample, every lane type), the white furnace
 //! over the whole sphere stays at most 1, the sampler draws the density its pdf gives over the
 //! whole sphere (chi-square on (cos theta in [-1, 1], phi) bins, as tests/transmission's), a
@@ -7,6 +8,8 @@
 
 use brdf::integrate::directional_albedo_sphere;
 use brdf::layers::layered::Layered;
+use brdf::material::MetallicRoughness;
+use brdf::transmission::Volume;
 use brdf::wide::{f32x8, f64x4};
 use brdf::{Real, V3};
 use core::f64::consts::TAU;
@@ -43,21 +46,29 @@ fn transmission_zero_is_the_material_without_it_bit_for_bit() {
                 .and_then(|m| m.with_clearcoat(r(), r()))
                 .and_then(|m| m.with_anisotropy(r(), r()))
                 .unwrap();
-            let with = without.with_transmission(T::ZERO).unwrap();
-            for _ in 0..10 {
-                let (o, i) = (sphere_dir(&mut rng), sphere_dir(&mut rng));
-                let wo = V3::new(x(o.x), x(o.y), x(o.z.abs()));
-                let wi = V3::new(x(i.x), x(i.y), x(i.z));
-                let (a, b) = (with.eval(wo, wi), without.eval(wo, wi));
-                bits(a.x, b.x, "eval.x");
-                bits(a.y, b.y, "eval.y");
-                bits(a.z, b.z, "eval.z");
-                bits(with.pdf(wo, wi), without.pdf(wo, wi), "pdf");
-                let (u1, u2) = (x(rng.next_f64()), x(rng.next_f64()));
-                let ((a, pa), (b, pb)) = (with.sample(wo, u1, u2), without.sample(wo, u1, u2));
-                bits(a.x, b.x, "sample.x");
-                bits(a.z, b.z, "sample.z");
-                bits(pa, pb, "sample pdf");
+            let thick = Volume::new(x(0.5), V3::splat(x(0.5)), x(2.0)).unwrap();
+            for with in [
+                without.with_transmission(T::ZERO).unwrap(),
+                without
+                    .with_transmission(T::ZERO)
+                    .unwrap()
+                    .with_volume(thick),
+            ] {
+                for _ in 0..10 {
+                    let (o, i) = (sphere_dir(&mut rng), sphere_dir(&mut rng));
+                    let wo = V3::new(x(o.x), x(o.y), x(o.z.abs()));
+                    let wi = V3::new(x(i.x), x(i.y), x(i.z));
+                    let (a, b) = (with.eval(wo, wi), without.eval(wo, wi));
+                    bits(a.x, b.x, "eval.x");
+                    bits(a.y, b.y, "eval.y");
+                    bits(a.z, b.z, "eval.z");
+                    bits(with.pdf(wo, wi), without.pdf(wo, wi), "pdf");
+                    let (u1, u2) = (x(rng.next_f64()), x(rng.next_f64()));
+                    let ((a, pa), (b, pb)) = (with.sample(wo, u1, u2), without.sample(wo, u1, u2));
+                    bits(a.x, b.x, "sample.x");
+                    bits(a.z, b.z, "sample.z");
+                    bits(pa, pb, "sample pdf");
+                }
             }
         }
     }
@@ -74,11 +85,15 @@ fn transmission_zero_is_the_material_without_it_bit_for_bit() {
 #[test]
 fn white_furnace_over_the_sphere_is_at_most_one() {
     let mut worst: f64 = 0.0;
+    let thick = Volume::new(1.0, V3::splat(1.0), f64::MAX).unwrap();
     for rough in [0.2, 0.5, 1.0] {
-        for layers in [false, true] {
+        for (layers, volume) in [(false, false), (true, false), (false, true), (true, true)] {
             let mut m = Layered::new(V3::splat(1.0), 0.0, rough)
                 .and_then(|m| m.with_transmission(1.0))
                 .unwrap();
+            if volume {
+                m = m.with_volume(thick);
+            }
             if layers {
                 m = m
                     .with_sheen(V3::splat(1.0), 0.5)
@@ -91,7 +106,7 @@ fn white_furnace_over_the_sphere_is_at_most_one() {
                 let mirrored = V3::new(wo.x, wo.y, -wo.z);
                 let e = directional_albedo_sphere(wo, |o, i| m.eval(o, i).y, &[through, mirrored]);
                 println!(
-                    "rough {rough} layers {layers} theta {theta}: albedo {:.5}",
+                    "rough {rough} layers {layers} volume {volume} theta {theta}: albedo {:.5}",
                     e.value
                 );
                 worst = worst.max(e.value);
@@ -169,8 +184,35 @@ fn chi_square(m: &Layered<f64>, pdf: &dyn Fn(V3<f64>) -> f64, wo: V3<f64>) -> (f
     (stat, dof.saturating_sub(1), stray)
 }
 
-fn transmissive() -> [(Layered<f64>, f64); 3] {
+fn transmissive() -> [(Layered<f64>, f64); 6] {
+    let thick = Volume::new(0.2, V3::new(0.9, 0.5, 0.2), 1.0).unwrap();
+    let diamond = MetallicRoughness::new(V3::new(0.5, 0.6, 0.9), 0.1, 0.8)
+        .and_then(|b| b.with_ior(2.4))
+        .unwrap();
     [
+        (
+            Layered::new(V3::new(0.9, 0.8, 0.7), 0.0, 0.4)
+                .and_then(|m| m.with_transmission(1.0))
+                .unwrap()
+                .with_volume(thick),
+            0.0,
+        ),
+        (
+            Layered::new(V3::new(0.8, 0.6, 0.3), 0.0, 0.5)
+                .and_then(|m| m.with_transmission(0.9))
+                .and_then(|m| m.with_clearcoat(1.0, 0.2))
+                .and_then(|m| m.with_anisotropy(0.6, 1.0))
+                .unwrap()
+                .with_volume(thick),
+            70.0,
+        ),
+        (
+            Layered::from_base(diamond)
+                .with_transmission(1.0)
+                .unwrap()
+                .with_volume(thick),
+            40.0,
+        ),
         (
             Layered::new(V3::new(0.9, 0.8, 0.7), 0.0, 0.4)
                 .and_then(|m| m.with_transmission(1.0))
@@ -216,7 +258,7 @@ fn sampler_matches_its_pdf_over_the_sphere() {
 /// transmission (no density below the surface) fail by a wide margin.
 #[test]
 fn a_pdf_without_the_transmission_lobe_is_rejected() {
-    let (m, theta) = transmissive()[1];
+    let (m, theta) = transmissive()[4];
     let wo = wo_at(theta);
     let opaque = m.with_transmission(0.0).unwrap();
     let (stat, dof, stray) = chi_square(&m, &|w| opaque.pdf(wo, w), wo);
