@@ -271,14 +271,16 @@ fn a_pdf_without_the_transmission_lobe_is_rejected() {
 }
 
 /// NaN in any component of wo or wi (or in u1, u2) gives NaN in eval, pdf and sample, on
-/// every lane type, with transmission on; an invalid factor is refused.
+/// every lane type, with transmission on, thin-walled and volumetric; an invalid factor is
+/// refused.
 #[test]
 fn nan_rule_on_every_lane() {
-    fn check<T: Real>(x: impl Fn(f64) -> T) {
+    fn check<T: Real>(x: impl Fn(f64) -> T, thickness: f64) {
         let m = Layered::new(V3::splat(x(0.8)), x(0.1), x(0.5))
             .and_then(|m| m.with_transmission(x(0.7)))
             .and_then(|m| m.with_clearcoat(x(0.5), x(0.3)))
-            .unwrap();
+            .unwrap()
+            .with_volume(Volume::new(x(thickness), V3::splat(x(1.0)), x(1.0)).unwrap());
         let nan = x(f64::NAN);
         let wo = V3::new(x(0.3), x(0.0), x(0.9539392014169456));
         let wi = V3::new(x(0.1), x(0.2), x(-0.9746794344808963));
@@ -308,8 +310,10 @@ fn nan_rule_on_every_lane() {
             assert!(m.with_transmission(x(bad)).is_err(), "{bad}");
         }
     }
-    check(|v| v as f32);
-    check(|v| v);
-    check(|v| f32x8::splat(v as f32));
-    check(f64x4::splat);
+    for thickness in [0.0, 1.0] {
+        check(|v| v as f32, thickness);
+        check(|v| v, thickness);
+        check(|v| f32x8::splat(v as f32), thickness);
+        check(f64x4::splat, thickness);
+    }
 }
