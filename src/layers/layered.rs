@@ -44,6 +44,25 @@
 //! coat on top the albedo stays at most 1 (measured max 0.976 over the test's grid); the
 //! furnace is not claimed there (the extensions' layering is not energy conserving).
 //!
+//! # Transmission (feature `transmission`)
+//! [`with_transmission`](Layered::with_transmission) follows KHR_materials_transmission with
+//! a thin-walled volume (KHR_materials_volume's thickness 0): in the dielectric base the
+//! diffuse lobe is mixed with the transmission lobe by the factor t,
+//! mix(kd baseColor / pi, kd baseColor btdf, t), the btdf being the base GGX lobe mirrored
+//! through the surface plane ([`crate::transmission::thin_walled_btdf`]) and kd read at its
+//! half vector h_T. wi below the surface then sees only that lobe, times the view side's
+//! sheen scaling 1 - max(sheenColor) E(n.v) and coat attenuation 1 - clearcoat F_coat(n_c.v);
+//! eval, pdf and sample cover the whole sphere. [`with_volume`](Layered::with_volume)
+//! (KHR_materials_volume) with a positive thickness replaces the mirrored lobe by Walter et
+//! al. 2007's refraction lobe into the base's IOR (radiance transport: the transmitted
+//! radiance is divided by eta^2, so a white glass of IOR 1.5 has a sphere albedo near
+//! 0.96 / 2.25 + 0.04 = 0.47 at normal view). The sampler gives the transmission lobe the
+//! weight (coat through) s_v t mean(kd baseColor), taken from the cosine lobes, and draws it
+//! from the base GGX's visible normals, reflected and mirrored through the surface plane
+//! (thin-walled) or refracted (volumetric). The white furnace over the whole sphere stays
+//! at most 1: measured max 0.9983 (`cargo test --test layers transmission:: --
+//! --nocapture`).
+//!
 //! # Sampling
 //! One-sample lobe selection by the lobes' estimated albedos at wo: coat clearcoat
 //! F_coat(n_c.v), then, scaled by what the coat lets through, the base specular (the mean of
@@ -104,6 +123,10 @@ pub struct Layered<T> {
     aniso_cos: T,
     aniso_sin: T,
     compensate: bool,
+    #[cfg(feature = "transmission")]
+    transmission: T,
+    #[cfg(feature = "transmission")]
+    thickness: T,
 }
 
 /// Largest |length - 1| accepted for the coat normal: a shader's `normalize` in f16 is
@@ -133,6 +156,10 @@ impl<T: Real> Layered<T> {
             aniso_cos: T::ONE,
             aniso_sin: T::ZERO,
             compensate: false,
+            #[cfg(feature = "transmission")]
+            transmission: T::ZERO,
+            #[cfg(feature = "transmission")]
+            thickness: T::ZERO,
         }
     }
 
@@ -191,6 +218,85 @@ impl<T: Real> Layered<T> {
             aniso_sin: d.y,
             ..self
         })
+    }
+
+    /// KHR_materials_transmission, thin-walled (`KHR_materials_volume` with thickness 0): the
+    /// transmission factor t in [0, 1] (`"transmission"`), else [`ParamError`]. The dielectric
+    /// base's diffuse lobe kd baseColor / pi is scaled by 1 - t and, for wi below the surface,
+    /// the transmission lobe kd(h_T) t baseColor btdf is added, btdf the base GGX mirrored
+    /// through the surface plane ([`crate::transmission::thin_walled_btdf`], h_T its half
+    /// vector), seen through the layers above (module docs, "Transmission"). Metals do not
+    /// transmit (kd carries 1 - metallic). t = 0 is the material without it, bit for bit.
+    #[cfg(feature = "transmission")]
+    pub fn with_transmission(self, transmission: T) -> Result<Self, ParamError> {
+        require::<T>(in_unit(transmission), "transmission", "in [0, 1]")?;
+        Ok(Self {
+            transmission,
+            ..self
+        })
+    }
+
+    /// KHR_materials_volume: the transmission lobe's reading by the volume's thickness (see
+    /// [`crate::transmission::Volume`], validated there). Thickness 0 (the default) keeps the
+    /// thin-walled lobe of [`with_transmission`](Self::with_transmission); a positive
+    /// thickness makes the surface the boundary of a volume of index eta and the lobe Walter
+    /// et al. 2007's refraction lobe (radiance transport, without its own Fresnel: kd carries
+    /// 1 - F), eta the dielectric base's IOR read back from its F0,
+    /// eta = (1 + sqrt(F0)) / (1 - sqrt(F0)) with F0 the mean of the dielectric F0's channels
+    /// (exactly KHR_materials_ior's ior while KHR_materials_specular is at its defaults).
+    /// eta = 1 (F0 = 0) makes the refraction lobe a Dirac; the thin-walled lobe stands in
+    /// for it there. The attenuation colour and distance act along the path inside the volume
+    /// ([`crate::transmission::Volume::transmittance`]), the renderer's business, not the
+    /// surface's. Without transmission (t = 0) the volume changes nothing.
+    #[cfg(feature = "transmission")]
+    #[must_use]
+    pub fn with_volume(self, volume: crate::transmission::Volume<T>) -> Self {
+        Self {
+            thickness: volume.thickness(),
+            ..self
+        }
+    }
+
+    /// The volumetric reading's relative index eta (>= 1; [`Self::with_volume`]) and whether
+    /// the lobe is the thin-walled one (thickness 0, or eta within rounding of 1).
+    #[cfg(feature = "transmission")]
+    #[inline]
+    fn volume_eta(&self) -> (T, T::Mask) {
+        let f0 = self.base.dielectric_f0();
+        let r = ((f0.x + f0.y + f0.z) * T::splat(1.0 / 3.0))
+            .clamp(T::ZERO, T::ONE)
+            .sqrt_nonneg();
+        let eta = ((T::ONE + r) / (T::ONE - r).max(T::MIN_POSITIVE)).min(T::MAX);
+        // Below 1 + 1e-4 the refraction lobe is narrower than the GGX floor resolves.
+        let thin = self.thickness.simd_le(T::ZERO) | eta.simd_le(T::splat(1.0 + 1e-4));
+        (eta, thin)
+    }
+
+    /// The transmission lobe's BTDF (no Fresnel, no colour) and the half vector whose
+    /// wo.h feeds its Fresnel: thin-walled or volumetric by [`Self::volume_eta`].
+    #[cfg(feature = "transmission")]
+    #[inline]
+    fn btdf_and_half(&self, wo: V3<T>, wi: V3<T>) -> (T, V3<T>) {
+        use crate::rough_dielectric::{Transport, btdf_without_fresnel};
+        let (eta, thin) = self.volume_eta();
+        let (wo_a, wi_a) = (self.aniso_local(wo), self.aniso_local(wi));
+        let ggx = self.base_ggx();
+        let f_thin = crate::transmission::thin_walled_btdf(&ggx, wo_a, wi_a);
+        let (f_vol, _) = btdf_without_fresnel(&ggx, wo_a, wi_a, eta, Transport::Radiance);
+        let h_thin = (wo + V3::new(wi.x, wi.y, -wi.z)).normalize_or(V3::unit_z());
+        let h_vol = self.refraction_half(wo, wi, eta);
+        (
+            T::select(thin, f_thin, f_vol),
+            V3::select(thin, h_thin, h_vol),
+        )
+    }
+
+    /// The generalized half vector of a refraction from wo (outside) to wi (inside, index
+    /// eta): h = -normalize(wo + eta wi) (Walter et al. 2007 eq. 16), +z where degenerate.
+    #[cfg(feature = "transmission")]
+    #[inline]
+    fn refraction_half(&self, wo: V3<T>, wi: V3<T>, eta: T) -> V3<T> {
+        -(wo + wi * eta).normalize_or(-V3::unit_z())
     }
 
     /// The same material with the per-lobe multiple-scattering compensation on or off
@@ -305,8 +411,14 @@ impl<T: Real> Layered<T> {
             let ms_m = kulla_conty_ggx_rgb(wo.z, wi.z, a_eff, favg_m);
             spec_ms = ms_d * (T::ONE - m) + ms_m * m;
         }
+        // KHR_materials_transmission moves the fraction t of the diffuse lobe below the
+        // surface; t = 0 multiplies by exactly 1, leaving the base bit for bit.
+        #[cfg(feature = "transmission")]
+        let keep = T::ONE - self.transmission;
+        #[cfg(not(feature = "transmission"))]
+        let keep = T::ONE;
         let channel = |fc: T, kc: T, bc: T, ms: T| {
-            let value = fc.mul_add(dv, kc * bc * T::FRAC_1_PI) + ms;
+            let value = fc.mul_add(dv, kc * bc * T::FRAC_1_PI * keep) + ms;
             above_horizon(wo.z, wi.z, value.min(T::MAX))
         };
         let base_f = V3::new(
@@ -337,14 +449,64 @@ impl<T: Real> Layered<T> {
             coat += kulla_conty_ggx(cc.n_dot_v, cc.n_dot_l, self.coat_alpha, favg);
         }
         let out = clearcoat::layer(sheened, coat, self.clearcoat, f_coat);
-        let fin = |x: T| finite_dirs(wo, wi, above_horizon(wo.z, wi.z, x));
+        let out = out.map(|x| above_horizon(wo.z, wi.z, x));
+        #[cfg(feature = "transmission")]
+        let out = self.with_transmitted(out, wo, wi, e_v, f_coat);
+        let fin = |x: T| finite_dirs(wo, wi, x);
         V3::new(fin(out.x), fin(out.y), fin(out.z))
     }
 
+    /// `reflected` where wi is above the surface; below it (wo above, t > 0) the
+    /// transmission lobe (thin-walled or volumetric) kd(h_T) t baseColor btdf, dimmed by the sheen's view-side scaling
+    /// 1 - max(sheenColor) E(n.v) and the coat's 1 - clearcoat F_coat(n_c.v) (the light leaves
+    /// through both layers on the view's side).
+    #[cfg(feature = "transmission")]
+    #[inline]
+    fn with_transmitted(&self, reflected: V3<T>, wo: V3<T>, wi: V3<T>, e_v: T, f_coat: T) -> V3<T> {
+        let t = self.transmission;
+        let b = &self.base;
+        let (btdf, h_t) = self.btdf_and_half(wo, wi);
+        let (_, kd) = fresnel_and_kd(
+            schlick_weights(wo.dot(h_t).clamp(T::ZERO, T::ONE)),
+            b.base_color(),
+            b.metallic(),
+            b.dielectric_f0(),
+            b.dielectric_f90(),
+            b.coupling(),
+        );
+        let m = self.sheen_max();
+        let through = (T::ONE - self.clearcoat * f_coat) * (T::ONE - m * e_v) * t * btdf;
+        let live = t.simd_gt(T::ZERO) & wo.z.simd_gt(T::ZERO) & wi.z.simd_lt(T::ZERO);
+        let base = b.base_color();
+        let lobe = |kc: T, bc: T, r: T| T::select(live, (kc * bc * through).min(T::MAX), r);
+        V3::new(
+            lobe(kd.x, base.x, reflected.x),
+            lobe(kd.y, base.y, reflected.y),
+            lobe(kd.z, base.z, reflected.z),
+        )
+    }
+
+    /// max(sheenColor).
+    #[inline]
+    fn sheen_max(&self) -> T {
+        self.sheen_color
+            .x
+            .max(self.sheen_color.y)
+            .max(self.sheen_color.z)
+    }
+
     /// The lobe-selection probabilities at wo: (coat, base specular, cosine lobes), summing
-    /// to 1 (module docs, "Sampling"). NaN where a component of wo is NaN or infinite.
+    /// to 1 without transmission; with it, the transmission lobe takes the rest, 1 minus
+    /// their sum (module docs, "Sampling"). NaN where a component of wo is NaN or infinite.
     #[must_use]
     pub fn lobe_probabilities(&self, wo: V3<T>) -> V3<T> {
+        self.lobe_weights(wo).0
+    }
+
+    /// (coat, base specular, cosine lobes) and the transmission lobe's probability, summing
+    /// to 1.
+    #[inline]
+    fn lobe_weights(&self, wo: V3<T>) -> (V3<T>, T) {
         let b = &self.base;
         let mean = |c: V3<T>| (c.x + c.y + c.z) * T::splat(1.0 / 3.0);
         let (f, _) = fresnel_and_kd(
@@ -368,18 +530,21 @@ impl<T: Real> Layered<T> {
         );
         let w_coat = self.clearcoat * clearcoat::fresnel(self.coat_normal.dot(wo));
         let through = T::ONE - w_coat;
-        let m = self
-            .sheen_color
-            .x
-            .max(self.sheen_color.y)
-            .max(self.sheen_color.z);
+        let m = self.sheen_max();
         let e_v = sheen::albedo(wo.z, self.sheen_alpha);
         let s_v = T::ONE - m * e_v;
         let w_spec = through * s_v * mean(f);
         let base = b.base_color();
         let diffuse = V3::new(kd.x * base.x, kd.y * base.y, kd.z * base.z);
-        let w_cos = through * (m * e_v + s_v * mean(diffuse));
-        let sum = w_coat + w_spec + w_cos;
+        // The transmission lobe's share of the diffuse weight; t = 0 multiplies by exactly 1
+        // and adds exactly 0.
+        #[cfg(feature = "transmission")]
+        let t = self.transmission;
+        #[cfg(not(feature = "transmission"))]
+        let t = T::ZERO;
+        let w_cos = through * (m * e_v + s_v * (mean(diffuse) * (T::ONE - t)));
+        let w_trans = through * s_v * mean(diffuse) * t;
+        let sum = w_coat + w_spec + w_cos + w_trans;
         // Nothing reflects (a black, non-specular base without layers): any lobe will do.
         let empty = sum.simd_le(T::ZERO);
         let safe = T::select(empty, T::ONE, sum);
@@ -388,11 +553,15 @@ impl<T: Real> Layered<T> {
             T::select(empty, T::ZERO, w_spec / safe),
             T::select(empty, T::ONE, w_cos / safe),
         );
+        let p_trans = T::select(empty, T::ZERO, w_trans / safe);
         let bad = any_nonfinite3(wo);
-        V3::new(
-            nan_where(bad, p.x),
-            nan_where(bad, p.y),
-            nan_where(bad, p.z),
+        (
+            V3::new(
+                nan_where(bad, p.x),
+                nan_where(bad, p.y),
+                nan_where(bad, p.z),
+            ),
+            nan_where(bad, p_trans),
         )
     }
 
@@ -404,7 +573,7 @@ impl<T: Real> Layered<T> {
     /// A zero-length wo or wi gives 0; a NaN or infinite component of wo or wi gives NaN.
     #[must_use]
     pub fn pdf(&self, wo: V3<T>, wi: V3<T>) -> T {
-        let p = self.lobe_probabilities(wo);
+        let (p, p_trans) = self.lobe_weights(wo);
         let h = (wo + wi).normalize_or(V3::unit_z());
         let wo_dot_h = wo.dot(h);
         let spec = sampling::reflect_pdf(
@@ -422,8 +591,43 @@ impl<T: Real> Layered<T> {
         );
         let cos = sampling::cosine_hemisphere_pdf(wi);
         let pdf = p.x * coat + p.y * spec + p.z * cos;
+        #[cfg(feature = "transmission")]
+        let pdf = T::select(
+            p_trans.simd_gt(T::ZERO),
+            p_trans.mul_add(self.transmission_pdf(wo, wi), pdf),
+            pdf,
+        );
+        #[cfg(not(feature = "transmission"))]
+        let _ = p_trans;
         let zero = crate::vec3::is_zero3(wo) | crate::vec3::is_zero3(wi);
         finite_dirs(wo, wi, T::select(zero, T::ZERO, pdf))
+    }
+
+    /// The transmission lobe's density at wi: thin-walled, the base specular's at wi mirrored
+    /// through the surface plane (the sampler mirrors a specular sample); volumetric, the
+    /// visible-normal density of h = -normalize(wo + eta wi) times the refraction Jacobian
+    /// eta^2 |wi.h| / (wo.h + eta wi.h)^2 (Walter et al. 2007 eq. 17), 0 where (wo, wi) is no
+    /// refraction pair (wo.h <= 0 or wi.h >= 0).
+    #[cfg(feature = "transmission")]
+    #[inline]
+    fn transmission_pdf(&self, wo: V3<T>, wi: V3<T>) -> T {
+        let (eta, thin) = self.volume_eta();
+        let ggx = self.base_ggx();
+        let wo_a = self.aniso_local(wo);
+        let h_thin = (wo + V3::new(wi.x, wi.y, -wi.z)).normalize_or(V3::unit_z());
+        let p_thin = sampling::reflect_pdf(
+            sampling::visible_normal_pdf(&ggx, wo_a, self.aniso_local(h_thin)),
+            wo.dot(h_thin),
+        );
+        let h = self.refraction_half(wo, wi, eta);
+        let (o_h, i_h) = (wo.dot(h), wi.dot(h));
+        let pair = o_h.simd_gt(T::ZERO) & i_h.simd_lt(T::ZERO);
+        let denom = eta.mul_add(i_h, o_h);
+        let jacobian = (eta * eta * i_h.abs() / (denom * denom)).min(T::MAX);
+        let p_vol =
+            (sampling::visible_normal_pdf(&ggx, wo_a, self.aniso_local(h)) * jacobian).min(T::MAX);
+        let p_vol = T::select(pair, p_vol, T::ZERO);
+        T::select(thin, p_thin, p_vol)
     }
 
     /// Draws wi for the view `wo` by one-sample lobe selection and returns (wi, pdf) with
@@ -434,19 +638,24 @@ impl<T: Real> Layered<T> {
     /// and pdf.
     #[must_use]
     pub fn sample(&self, wo: V3<T>, u1: T, u2: T) -> (V3<T>, T) {
-        let p = self.lobe_probabilities(wo);
+        let (p, p_trans) = self.lobe_weights(wo);
         let nan_u = u1.is_nan() | u2.is_nan();
         let u1 = u1.clamp(T::ZERO, T::ONE - T::EPSILON * T::HALF);
         let c1 = p.x;
         let c2 = p.x + p.y;
         // c2 can round just below 1 when the cosine lobes have probability 0: u1 above it
         // then still picks the specular lobe, never a lobe of probability 0.
+        let c3 = c2 + p.z;
+        let no_trans = p_trans.simd_le(T::ZERO);
         let is_coat = u1.simd_lt(c1);
-        let is_spec = !is_coat & (u1.simd_lt(c2) | p.z.simd_le(T::ZERO));
+        let is_spec = !is_coat & (u1.simd_lt(c2) | (p.z.simd_le(T::ZERO) & no_trans));
+        // Likewise the cosine lobes take u1 above c3 when transmission has probability 0.
+        let is_cos = !is_coat & !is_spec & (u1.simd_lt(c3) | no_trans);
         let below1 = |x: T| x.clamp(T::ZERO, T::ONE - T::EPSILON * T::HALF);
         let u_coat = below1(u1 / p.x);
         let u_spec = below1((u1 - c1) / p.y);
         let u_cos = below1((u1 - c2) / p.z);
+        let u_trans = below1((u1 - c3) / p_trans);
         let frame = Frame::from_normal(self.coat_normal);
         let wo_c = frame.to_local(wo);
         let (m_c, _) = sampling::ggx_vndf(&self.coat_ggx(), wo_c, u_coat, u2);
@@ -455,7 +664,18 @@ impl<T: Real> Layered<T> {
         let (m_a, _) = sampling::ggx_vndf(&self.base_ggx(), wo_a, u_spec, u2);
         let wi_spec = self.aniso_world(wo_a.mirror(m_a));
         let (wi_cos, _) = sampling::cosine_hemisphere(u_cos, u2);
-        let wi = V3::select(is_coat, wi_coat, V3::select(is_spec, wi_spec, wi_cos));
+        #[cfg(feature = "transmission")]
+        let wi_trans = self.sample_transmission(wo_a, u_trans, u2);
+        #[cfg(not(feature = "transmission"))]
+        let wi_trans = {
+            let _ = u_trans;
+            wi_cos
+        };
+        let wi = V3::select(
+            is_coat,
+            wi_coat,
+            V3::select(is_spec, wi_spec, V3::select(is_cos, wi_cos, wi_trans)),
+        );
         let bad = any_nonfinite3(wo) | nan_u;
         let wi = V3::new(
             nan_where(bad, wi.x),
@@ -463,6 +683,26 @@ impl<T: Real> Layered<T> {
             nan_where(bad, wi.z),
         );
         (wi, self.pdf(wo, wi))
+    }
+
+    /// A transmission-lobe direction for `wo_a` (anisotropy frame): a visible normal m of the
+    /// base GGX, then the reflection about m mirrored through the surface plane
+    /// (thin-walled), or the refraction through m into index eta (Snell's law in vector form,
+    /// Walter et al. 2007 eq. 40: wi = (c - eta cos_t) m - wo, normalized, c = wo.m,
+    /// eta cos_t = sqrt(eta^2 - 1 + c^2); eta >= 1, so never total internal reflection).
+    #[cfg(feature = "transmission")]
+    #[inline]
+    fn sample_transmission(&self, wo_a: V3<T>, u1: T, u2: T) -> V3<T> {
+        let (eta, thin) = self.volume_eta();
+        let (m, _) = sampling::ggx_vndf(&self.base_ggx(), wo_a, u1, u2);
+        let r = wo_a.mirror(m);
+        let thin_a = V3::new(r.x, r.y, -r.z);
+        let c = wo_a.dot(m).clamp(T::ZERO, T::ONE);
+        let eta_cos_t = (eta.mul_add(eta, -T::ONE) + c * c)
+            .sqrt_nonneg()
+            .min(T::MAX);
+        let vol_a = (m * (c - eta_cos_t) - wo_a).normalize_or(-V3::unit_z());
+        self.aniso_world(V3::select(thin, thin_a, vol_a))
     }
 
     /// [`eval`](Self::eval) from world space: f(v, l) at the shading point `sp` and the

@@ -3149,6 +3149,8 @@ const NOT_KERNELS: &[(&str, &str)] = &[
     ("Layered::with_clearcoat", "validating constructor"),
     ("Layered::with_clearcoat_normal", "validating constructor"),
     ("Layered::with_anisotropy", "validating constructor"),
+    ("Layered::with_transmission", "validating constructor"),
+    ("Layered::with_volume", "constructor"),
     ("Layered::with_compensation", "constructor"),
     ("Transmission::factor", "getter"),
     ("Volume::thickness", "getter"),

@@ -10,6 +10,8 @@
 //! - `anisotropy`: strength 0 is isotropic, direction, bent reflection against the viewer
 //! - `layered`: the layered material: zero layers, furnace, energy, per-lobe compensation,
 //!   reciprocity, sampler chi-square, extremes and lanes
+//! - `transmission`: KHR_materials_transmission in the layered material: zero is the material
+//!   without it, the furnace over the sphere, the sampler over the sphere, NaN on every lane
 //! - `prepared`: the material prepared per shading point against the direct eval; the
 //!   view-only albedo scaling against the min form
 
@@ -24,3 +26,4 @@ mod sheen;
 mod sheen_albedo;
 mod sheen_engines;
 mod specular;
+mod transmission;
