@@ -44,7 +44,7 @@
 //! integrates to the same reflection plus eta'^-2 times the transmission.
 //!
 //! # Sampling
-//! [`ggx_sample`] and [`beckmann_sample`] draw a visible facet normal (`sampling::ggx_vndf_spherical_cap`,
+//! `ggx_sample` and `beckmann_sample` draw a visible facet normal (`sampling::ggx_vndf_spherical_cap`,
 //! `sampling::beckmann_vndf`) as seen from wo's side, choose reflection with probability
 //! F(wo.m) and refraction otherwise, and return (wi, pdf, weight) with the combined pdf of
 //! both lobes ([`pdf`]) and weight = f |wi.z| / pdf = G2 / G1(wo) (times s for a refraction):
@@ -291,7 +291,7 @@ pub fn eval<T: Real, M: Microfacet<T> + ?Sized>(
     lobes(dist, wo, wi, eta, transport).0
 }
 
-/// pdf (solid angle) of [`ggx_sample`] and [`beckmann_sample`] at wi, both lobes combined, for
+/// pdf (solid angle) of `ggx_sample` and `beckmann_sample` at wi, both lobes combined, for
 /// multiple importance sampling: with h = [`half_vector`]`(wo, wi, eta)`, F = F(wo.h) and
 /// D_v(h) the visible-normal density seen from wo's side (`Microfacet::d_visible` of
 /// sign(wo.z) wo),

@@ -18,7 +18,7 @@
 //!
 //! - **thin-walled** (thickness 0, or no `KHR_materials_volume`): two back-to-back surfaces with
 //!   no net refraction; the BTDF is the reflection lobe mirrored through the surface plane,
-//!   [`thin_walled_btdf`], with the half vector h_T = normalize(wo + wi'), wi' = (wi.x, wi.y,
+//!   `thin_walled_btdf`, with the half vector h_T = normalize(wo + wi'), wi' = (wi.x, wi.y,
 //!   -wi.z);
 //! - **volumetric** (thickness > 0): the surface bounds a volume of index `ior`; the BTDF is
 //!   Walter et al. 2007's refraction lobe (`rough_dielectric`, radiance transport, without its

@@ -45,14 +45,14 @@
 //! furnace is not claimed there (the extensions' layering is not energy conserving).
 //!
 //! # Transmission (feature `transmission`)
-//! [`with_transmission`](Layered::with_transmission) follows KHR_materials_transmission with
+//! `with_transmission` follows KHR_materials_transmission with
 //! a thin-walled volume (KHR_materials_volume's thickness 0): in the dielectric base the
 //! diffuse lobe is mixed with the transmission lobe by the factor t,
 //! mix(kd baseColor / pi, kd baseColor btdf, t), the btdf being the base GGX lobe mirrored
-//! through the surface plane ([`crate::transmission::thin_walled_btdf`]) and kd read at its
+//! through the surface plane (`transmission::thin_walled_btdf`) and kd read at its
 //! half vector h_T. wi below the surface then sees only that lobe, times the view side's
 //! sheen scaling 1 - max(sheenColor) E(n.v) and coat attenuation 1 - clearcoat F_coat(n_c.v);
-//! eval, pdf and sample cover the whole sphere. [`with_volume`](Layered::with_volume)
+//! eval, pdf and sample cover the whole sphere. `with_volume`
 //! (KHR_materials_volume) with a positive thickness replaces the mirrored lobe by Walter et
 //! al. 2007's refraction lobe into the base's IOR (radiance transport: the transmitted
 //! radiance is divided by eta^2, so a white glass of IOR 1.5 has a sphere albedo near

@@ -128,7 +128,7 @@ fn lambda_exponent<T: Real>(x: T, alpha: T) -> T {
 /// alpha (module docs). Continuous at c = 1/2; about 2e-8 at c = 1 and exp(a + e) (2.9e7 to
 /// 7.7e8) at c = 0.
 ///
-/// Domain: n_dot_v a cosine in [-1, 1], used as |c| clamped to [0, 1] (as [`crate::ggx`]'s
+/// Domain: n_dot_v a cosine in [-1, 1], used as |c| clamped to [0, 1] (as `crate::ggx`'s
 /// Lambda); alpha in [0, 1], floored at [`ALPHA_MIN`]; NaN for NaN input or alpha outside
 /// [0, 1].
 ///

@@ -10,7 +10,7 @@
 //!
 //! [`Ior`] and [`Specular`] validate the glTF parameters once; [`f0_from_ior`] and
 //! [`dielectric_f0`] are the unvalidated kernels (NaN outside their domains). The
-//! [`MetallicRoughness`](crate::material::MetallicRoughness) material applies the same rule
+//! `material::MetallicRoughness` material applies the same rule
 //! through its `with_ior` and `with_specular`.
 //!
 //! Sources: The Khronos Group, "KHR_materials_ior" (ratified), "Implementation";
