@@ -4,7 +4,7 @@
 use super::{per_channel, sanitize, sanitize_rgb, saturate_rgb};
 use crate::color::{self, ACES_HILL_INPUT, ACES_HILL_OUTPUT, luminance};
 use crate::domain::{nan_unless, nan_where};
-use crate::dw::Dw;
+use crate::dw::{Dw, two_prod};
 use crate::error::{ParamError, require};
 use crate::real::Real;
 use crate::vec3::V3;
@@ -34,8 +34,12 @@ fn expm1<T: Real>(y: T) -> T {
 
 /// The exponential exposure curve T(c) = 1 - exp(-c * exposure). T(0) = 0, T(inf) = 1.
 /// `exposure` in (0, MAX] ([`super::Exposure`] builds one); 0, negative, +inf and NaN give NaN.
-/// Evaluated as -expm1(-c exposure) (Kahan's expm1), so a small c keeps its relative
-/// accuracy instead of losing it to the cancellation in 1 - exp(-c exposure).
+/// Evaluated as -expm1(-c exposure), so a small c keeps its relative accuracy instead of
+/// losing it to the cancellation in 1 - exp(-c exposure): on f32 and f32x8 in f64 (the product
+/// of two f32 values is exact there, Kahan's expm1 adds a few units of 2^-53) and rounded
+/// once; on f64 and f64x4 with the product's rounding error carried as a double word
+/// (expm1(p + e) = expm1(p) + e (1 + expm1(p)) to first order) and the C library's expm1
+/// lane by lane.
 ///
 /// Peers: none of three.js, Filament and bevy ships 1 - exp(-e c) as an operator (three.js's
 /// `LinearToneMapping` is saturate(e c); bevy uses 1 - exp(-x) only inside its
@@ -44,7 +48,44 @@ fn expm1<T: Real>(y: T) -> T {
 #[must_use]
 pub fn exposure_curve<T: Real>(c: T, exposure: T) -> T {
     let ok = exposure.simd_gt(T::ZERO) & exposure.simd_le(T::MAX);
-    nan_unless(ok, (-expm1(-sanitize(c) * exposure)).saturate())
+    let c = sanitize(c);
+    let t = T::via_f64(
+        [c, exposure],
+        ExposureCurve,
+        crate::real::sealed::Token::NEW,
+    );
+    nan_unless(ok, nan_where(c.is_nan(), t.saturate()))
+}
+
+/// 1 - exp(-c e) for the sanitized c and any e (the caller maps an invalid e to NaN).
+#[derive(Clone, Copy)]
+struct ExposureCurve;
+
+impl crate::real::sealed::Widened<2> for ExposureCurve {
+    /// c e, and with it the result, can lie below f32's smallest normal number.
+    const TINY: bool = true;
+
+    #[inline]
+    fn native<T: Real>(self, [c, e]: [T; 2]) -> T {
+        // c e = p + err exactly (while p is finite and above 2^-969, where a smaller p's lost
+        // bits lie far below the result's last place). Where p >= 40 the result rounds to 1
+        // and err is dropped (it may be NaN once c e overflows).
+        let (p, err) = two_prod(c, e);
+        let m = T::from_fn(|i| {
+            let x: f64 = (-p).lane(i).into();
+            <T::Scalar as Real>::splat(libm::expm1(x))
+        });
+        let err = T::select(p.simd_lt(T::splat(40.0)), err, T::ZERO);
+        // 1 - exp(-p - err) = -m + err exp(-p) = -m + err (1 + m).
+        err.mul_add(T::ONE + m, -m)
+    }
+
+    #[inline]
+    fn wide<W: Real<Scalar = f64>>(self, [c, e]: [W; 2]) -> W {
+        // c and e are f32 values: their product has at most 48 significant bits and lies
+        // within f64's range, so it is exact.
+        -expm1(-(c * e))
+    }
 }
 
 /// Reinhard, Stark, Shirley, Ferwerda 2002, "Photographic Tone Reproduction for Digital
