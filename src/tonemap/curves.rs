@@ -69,7 +69,12 @@ impl crate::real::sealed::Widened<2> for ExposureCurve {
     fn native<T: Real>(self, [c, e]: [T; 2]) -> T {
         // c e = p + err exactly (while p is finite and above 2^-969, where a smaller p's lost
         // bits lie far below the result's last place). Where p >= 40 the result rounds to 1
-        // and err is dropped (it may be NaN once c e overflows).
+        // and err is dropped (it may be NaN once c e overflows). An exposure above 2^960 is
+        // moved by 2^-64 to c (c <= 1e9, both scalings exact), whose Veltkamp split without
+        // FMA overflows near the largest finite value.
+        let big = e.simd_gt(T::splat(9.745_314_011_4e288));
+        let c = c * T::select(big, T::splat(18_446_744_073_709_551_616.0), T::ONE);
+        let e = e * T::select(big, T::splat(5.421_010_862_427_522e-20), T::ONE);
         let (p, err) = two_prod(c, e);
         let m = T::from_fn(|i| {
             let x: f64 = (-p).lane(i).into();

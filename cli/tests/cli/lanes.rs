@@ -86,13 +86,11 @@ const POLYNOMIAL: &[(&str, u128)] = &[
     // asin and acos of the full Oren-Nayar model.
     // cos of the spot cone's angles.
     ("lights::SpotCone::eval", 64),
-    // exp2 (Karis's spherical-Gaussian Schlick), expm1 / exp (exposure), log2 (UE4 mips).
+    // exp2 (Karis's spherical-Gaussian Schlick), log2 (UE4 mips).
     ("fresnel::schlick_sg", 2),
     // The same exp2 in three.js's and Karis's Fresnel (conventions 0 and 3).
     ("engine::Convention::fresnel", 2),
     ("engine::Convention::specular", 2),
-    ("tonemap::exposure_curve", 4),
-    ("tonemap::Operator::apply", 2),
     ("ibl::dfg::mip_from_roughness_ue4", 2),
     ("ibl::dfg::roughness_from_mip_ue4", 2),
     // exp and pow of the sheen lobes and fits.
