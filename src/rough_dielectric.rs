@@ -158,6 +158,44 @@ fn cap_mul<T: Real>(a: T, b: T) -> T {
     (a * b).min(T::MAX)
 }
 
+/// What both lobes of a direction pair share: the generalized half vector and its parts
+/// ([`half_parts`]), the cosines with h, D(h), the height-correlated G2 and 1 / |wo.z wi.z|.
+struct Pair<T: Real> {
+    h: V3<T>,
+    etap: T,
+    reflect: T::Mask,
+    /// Each direction sees the facet's own side (a facet seen from behind neither reflects
+    /// nor refracts between them; this also drops the zero vectors, cosine 0), h is not
+    /// degenerate, and eta != 1.
+    live: T::Mask,
+    co: T,
+    o_h: T,
+    i_h: T,
+    d: T,
+    g2: T,
+    inv_cos: T,
+}
+
+#[inline]
+fn pair<T: Real, M: Microfacet<T> + ?Sized>(dist: &M, wo: V3<T>, wi: V3<T>, eta: T) -> Pair<T> {
+    let (h, etap, reflect, degenerate) = half_parts(wo, wi, eta);
+    let (co, ci) = (wo.z, wi.z);
+    let (o_h, i_h) = (wo.dot(h), wi.dot(h));
+    let facing = (o_h * co).simd_gt(T::ZERO) & (i_h * ci).simd_gt(T::ZERO);
+    Pair {
+        h,
+        etap,
+        reflect,
+        live: facing & !degenerate & (eta - T::ONE).abs().simd_gt(T::ZERO),
+        co,
+        o_h,
+        i_h,
+        d: dist.d(h),
+        g2: (T::ONE + dist.lambda(wo) + dist.lambda(wi)).recip(),
+        inv_cos: (co.abs() * ci.abs()).recip().min(T::MAX),
+    }
+}
+
 /// The value of both lobes at a pair: (f, pdf) for `eval` and `pdf`, sharing one half vector.
 #[inline]
 fn lobes<T: Real, M: Microfacet<T> + ?Sized>(
@@ -167,18 +205,20 @@ fn lobes<T: Real, M: Microfacet<T> + ?Sized>(
     eta: T,
     transport: Transport,
 ) -> (T, T) {
-    let (h, etap, reflect, degenerate) = half_parts(wo, wi, eta);
-    let (co, ci) = (wo.z, wi.z);
-    let (o_h, i_h) = (wo.dot(h), wi.dot(h));
-    // Each direction must see the facet's own side (a facet seen from behind neither reflects
-    // nor refracts between them); this also drops the zero vectors (cosine 0).
-    let facing = (o_h * co).simd_gt(T::ZERO) & (i_h * ci).simd_gt(T::ZERO);
-    let live = facing & !degenerate & (eta - T::ONE).abs().simd_gt(T::ZERO);
+    let Pair {
+        h,
+        etap,
+        reflect,
+        live,
+        co,
+        o_h,
+        i_h,
+        d,
+        g2,
+        inv_cos,
+    } = pair(dist, wo, wi, eta);
     let f_r = fresnel::dielectric(o_h, eta);
     let t = T::ONE - f_r;
-    let d = dist.d(h);
-    let g2 = (T::ONE + dist.lambda(wo) + dist.lambda(wi)).recip();
-    let inv_cos = (co.abs() * ci.abs()).recip().min(T::MAX);
     // Reflection: D G2 F / (4 |co| |ci|).
     let fr = cap_mul(cap_mul(d * g2, f_r), T::splat(0.25) * inv_cos);
     // Transmission: D G2 T |i.h| |o.h| / (|ci| |co| (i.h + o.h / eta')^2) times s.
@@ -220,16 +260,20 @@ pub(crate) fn btdf_without_fresnel<T: Real, M: Microfacet<T> + ?Sized>(
     eta: T,
     transport: Transport,
 ) -> (T, T) {
-    let (h, etap, reflect, degenerate) = half_parts(wo, wi, eta);
-    let (co, ci) = (wo.z, wi.z);
-    let (o_h, i_h) = (wo.dot(h), wi.dot(h));
-    let facing = (o_h * co).simd_gt(T::ZERO) & (i_h * ci).simd_gt(T::ZERO);
-    let live = facing & !degenerate & !reflect & (eta - T::ONE).abs().simd_gt(T::ZERO);
+    let Pair {
+        etap,
+        reflect,
+        live,
+        o_h,
+        i_h,
+        d,
+        g2,
+        inv_cos,
+        ..
+    } = pair(dist, wo, wi, eta);
     let (dwh, s) = refraction_jacobian(o_h, i_h, etap, transport);
-    let g2 = (T::ONE + dist.lambda(wo) + dist.lambda(wi)).recip();
-    let inv_cos = (co.abs() * ci.abs()).recip().min(T::MAX);
-    let ft = cap_mul(cap_mul(dist.d(h) * g2, cap_mul(o_h.abs(), inv_cos)), dwh);
-    (T::select(live, cap_mul(ft, s), T::ZERO), o_h)
+    let ft = cap_mul(cap_mul(d * g2, cap_mul(o_h.abs(), inv_cos)), dwh);
+    (T::select(live & !reflect, cap_mul(ft, s), T::ZERO), o_h)
 }
 
 /// d(omega_h) / d(omega_i) = |i.h| / (i.h + o.h / eta')^2 (Walter et al. 2007 eq. 17), capped
