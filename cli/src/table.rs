@@ -1251,6 +1251,12 @@ pub static KERNELS: &[Kernel] = &[
         [fresnel::dielectric(cos_theta_i, eta)]
     ),
     kernel!(
+        "fresnel::dielectric_fast",
+        "Dielectric Fresnel in working precision, Born and Wolf 1.5.2",
+        [cos_theta_i: Domain::COS, eta: ETA] -> [f: Domain::UNIT],
+        [fresnel::dielectric_fast(cos_theta_i, eta)]
+    ),
+    kernel!(
         "fresnel::conductor",
         "Exact unpolarized conductor Fresnel reflectance of eta + i k, Born and Wolf 14.2",
         [cos_theta_i: Domain::COS, eta: ETA, k: KAPPA] -> [f: Domain::UNIT],

@@ -354,6 +354,11 @@ pub const NO_TWIN: &[(&str, &str)] = &[
         "a tangent frame of its normal: shaders build theirs from the mesh's tangents",
     ),
     (
+        "fresnel::dielectric_fast",
+        "not written yet: fresnel_dielectric (the twin of fresnel::dielectric) is already this \
+         working-precision form, without its cancellation-free g2 and W near c = 1",
+    ),
+    (
         "fresnel::average_dielectric",
         "a numerical integral evaluated in f64 only; fresnel_average_dielectric_fit is its \
          shader form",

@@ -426,6 +426,9 @@ pub fn families() -> Vec<Family> {
                 form!("fresnel::dielectric", false, [c = 0, e = 1], |T| one(
                     fresnel::dielectric(c, e)
                 )),
+                form!("fresnel::dielectric_fast", false, [c = 0, e = 1], |T| one(
+                    fresnel::dielectric_fast(c, e)
+                )),
                 form!(
                     "fresnel::schlick(f0_from_ior(eta))",
                     false,

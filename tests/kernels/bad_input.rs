@@ -1063,6 +1063,11 @@ fn fresnel_rows<T: Real>(t: &mut Vec<Kernel<T>>) {
         |x| vec![fr::dielectric(x[0], x[1])],
     ));
     t.push(k(
+        "fresnel::dielectric_fast",
+        vec![c("cos_theta_i", VH), p("eta", 1.5, &ETA_BAD)],
+        |x| vec![fr::dielectric_fast(x[0], x[1])],
+    ));
+    t.push(k(
         "fresnel::conductor",
         vec![
             c("cos_theta_i", VH),

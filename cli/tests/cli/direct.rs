@@ -181,6 +181,7 @@ pub fn direct<T: Scalar>(path: &str, a: &[T]) -> Option<Vec<T>> {
             vec![s, p]
         }
         "fresnel::dielectric" => vec![fresnel::dielectric(a[0], a[1])],
+        "fresnel::dielectric_fast" => vec![fresnel::dielectric_fast(a[0], a[1])],
         "fresnel::conductor" => vec![fresnel::conductor(a[0], a[1], a[2])],
         "fresnel::conductor_fast" => vec![fresnel::conductor_fast(a[0], a[1], a[2])],
         "fresnel::conductor_rgb" => three(fresnel::conductor_rgb(a[0], v(a, 1), v(a, 4))),
