@@ -8,16 +8,17 @@
 //! underscore: `tonemap_Operator_apply(operator_, ...)`), and use the same numerically stable forms (GGX D's
 //! cancellation-free denominator (1 - c)(1 + c) + c^2 alpha^2, the alpha clamps
 //! `ALPHA_MIN`/`ALPHA_MAX`, the caps at the largest finite value). Multi-channel results are
-//! `vec3<f32>` (`vec2<f32>` for two); an enumerated parameter (the material's diffuse
-//! coupling) is a `u32`. Helpers are prefixed `brdf_`; those shared by the families live in
-//! [`COMMON`].
+//! `vec3<f32>` (`vec2<f32>` for two, `array<f32, N>` beyond four: a sampler's direction, pdf
+//! and weights); an enumerated parameter (the material's diffuse coupling) is a `u32`. Helpers
+//! are prefixed `brdf_`; those shared by the families live in [`COMMON`].
 //!
 //! # Composing
 //! [`COMMON`] must come first, then each family after the families it calls into
 //! ([`Family::needs`]: [`COOK_TORRANCE`] needs [`GGX`], [`FRESNEL`] and [`BECKMANN`],
 //! [`DIFFUSE`] needs [`FRESNEL`], [`MATERIAL`] needs [`GGX`], [`FRESNEL`], [`BECKMANN`] and
 //! [`COOK_TORRANCE`], [`SAMPLING`] needs [`GGX`] and [`BECKMANN`], [`LAYERS`] needs [`GGX`]
-//! and [`FRESNEL`], [`TRANSMISSION`] needs [`GGX`]). No family defines a name another family
+//! and [`FRESNEL`], [`ROUGH_DIELECTRIC`] needs [`GGX`], [`FRESNEL`] and [`BECKMANN`],
+//! [`TRANSMISSION`] needs those and [`ROUGH_DIELECTRIC`]). No family defines a name another family
 //! defines, so any such subset concatenated after [`COMMON`] is one valid WGSL module:
 //!
 //! ```
@@ -108,12 +109,15 @@ pub const TONEMAP: &str = include_str!("../wgsl/tonemap.wgsl");
 pub const MATERIAL: &str = include_str!("../wgsl/material.wgsl");
 
 /// The twins of `brdf::ibl::dfg`'s per-pixel terms: the analytic split-sum fits (Karis mobile,
-/// Lazarov, Narkowicz's two), the split-sum specular, the roughness-mip mappings.
+/// Lazarov, Narkowicz's two), the split-sum specular, the roughness-mip mappings; and of
+/// `brdf::ibl::irradiance::Sh9`'s radiance and irradiance from nine RGB spherical-harmonic
+/// coefficients (`ibl_irradiance_Sh9_eval`, taking the 27 coefficients first).
 pub const IBL: &str = include_str!("../wgsl/ibl.wgsl");
 
 /// The twins of `brdf::sampling`'s cosine-hemisphere sampler and pdf, reflection Jacobian,
 /// GGX D cos and visible-normal samplers (Heitz's and by spherical caps), D cos and
-/// visible-normal pdfs and GGX reflection pdf. Needs [`GGX`] and [`BECKMANN`] before it.
+/// visible-normal pdfs, GGX and Beckmann reflection pdfs, and the GGX reflection samplers with
+/// their weights (a constant F, scalar or RGB). Needs [`GGX`] and [`BECKMANN`] before it.
 pub const SAMPLING: &str = include_str!("../wgsl/sampling.wgsl");
 
 /// The twins of `brdf::layers`' glTF extension lobes: the Charlie sheen's D, fitted Lambda
@@ -123,14 +127,17 @@ pub const SAMPLING: &str = include_str!("../wgsl/sampling.wgsl");
 /// width, direction and bent reflection vector. Needs [`GGX`] and [`FRESNEL`] before it.
 pub const LAYERS: &str = include_str!("../wgsl/layers.wgsl");
 
-/// The twin of `brdf::rough_dielectric::half_vector`, the generalized half vector of
-/// reflection and refraction (the BSDF, its pdf and samplers have no twins yet).
+/// The twins of `brdf::rough_dielectric`'s generalized half vector, BSDF
+/// (`rough_dielectric_eval`, the model a `u32`: 0 = GGX, 1 = Beckmann; the transport a `u32`:
+/// 0 = radiance, 1 = importance) and pdf of both lobes (the samplers have no twins yet). Needs
+/// [`GGX`], [`FRESNEL`] and [`BECKMANN`] before it.
 pub const ROUGH_DIELECTRIC: &str = include_str!("../wgsl/rough_dielectric.wgsl");
 
 /// The twins of `brdf::transmission::Volume`'s Beer-Lambert transmittance and attenuation
 /// coefficient (`transmission_Volume_transmittance`, taking the constructor's thickness,
-/// attenuation colour and distance first), and of `transmission::thin_walled_btdf`. Needs
-/// [`GGX`] before it.
+/// attenuation colour and distance first), and of `transmission::thin_walled_btdf` and
+/// `transmission::dielectric_bsdf`. Needs [`GGX`], [`FRESNEL`], [`BECKMANN`] and
+/// [`ROUGH_DIELECTRIC`] before it.
 pub const TRANSMISSION: &str = include_str!("../wgsl/transmission.wgsl");
 
 /// [`COMMON`] followed by every family, each after the families it needs: one module defining
@@ -236,11 +243,11 @@ pub const FAMILIES: &[Family] = &[
     Family {
         name: "rough_dielectric",
         source: ROUGH_DIELECTRIC,
-        needs: &[],
+        needs: &["ggx", "fresnel", "beckmann"],
     },
     Family {
         name: "transmission",
         source: TRANSMISSION,
-        needs: &["ggx"],
+        needs: &["ggx", "fresnel", "beckmann", "rough_dielectric"],
     },
 ];

@@ -217,3 +217,38 @@ fn cook_torrance_beckmann_dielectric(
     let dv = brdf_cook_torrance_beckmann_dv(n_dot_v, n_dot_l, n_dot_h, alpha);
     return brdf_cook_torrance_assemble(dv, n_dot_v, n_dot_l, f);
 }
+
+// The working-precision rough conductor, GGX, one channel, from local-frame directions (the
+// Rust kernel's ggx_conductor_local_fast; Walter et al. 2007; Born and Wolf 14.2): with
+// s = wo + wi, D V = alpha^2 |s|^4 / (2 pi (s_x^2 + s_y^2 + alpha^2 s_z^2)^2 den) in one
+// division, den = n.l sqrt(alpha^2 + n.v^2 (1 - alpha^2)) + n.v sqrt(alpha^2 + n.l^2 (1 -
+// alpha^2)) (the roots written alpha^2 sin^2 + cos^2, sin^2 without cancellation), the
+// divisor floored at f32's smallest normal as in the Rust kernel, capped at the largest finite
+// f32; times F = fresnel_conductor_fast(v.h, eta, k) with v.h = wo.s / |s|; 0 unless both
+// directions lie above the horizon. alpha clamped to [ALPHA_MIN, ALPHA_MAX].
+fn cook_torrance_ggx_conductor_local_fast(
+    wo_x: f32, wo_y: f32, wo_z: f32, wi_x: f32, wi_y: f32, wi_z: f32, alpha: f32, eta: f32,
+    k: f32,
+) -> f32 {
+    let a = brdf_clamp_alpha(alpha);
+    let sx = wo_x + wi_x;
+    let sy = wo_y + wi_y;
+    let sz = wo_z + wi_z;
+    let sxy = fma(sx, sx, sy * sy);
+    let ss = fma(sz, sz, sxy);
+    // Above the horizon s.z > 0, so |s| > 0: the select only keeps the unused branch finite.
+    let len = sqrt(ss);
+    let v_dot_h = saturate(select(fma(wo_x, sx, fma(wo_y, sy, wo_z * sz)) / len, 1.0,
+        len == 0.0));
+    let f = fresnel_conductor_fast(v_dot_h, eta, k);
+    let a2 = a * a;
+    let t = fma(a2, sz * sz, sxy);
+    let cv = saturate(wo_z);
+    let cl = saturate(wi_z);
+    let rv = sqrt(fma(a2, brdf_sin2(cv), cv * cv));
+    let rl = sqrt(fma(a2, brdf_sin2(cl), cl * cl));
+    let den = fma(cl, rv, cv * rl);
+    let dv = min((a2 * (0.5 * BRDF_FRAC_1_PI)) * (ss * ss) / max((t * t) * den, 1.17549435e-38),
+        BRDF_F32_MAX);
+    return select(0.0, dv * f, (wo_z > 0.0) & (wi_z > 0.0));
+}

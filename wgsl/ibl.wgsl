@@ -1,7 +1,8 @@
 // brdf: image-based lighting terms a shader evaluates per pixel, the twins of the Rust module
 // `ibl::dfg` (the analytic split-sum fits [A, B], the split-sum specular and the roughness-mip
-// mappings). Needs common.wgsl. The DFG table, prefilter samples, irradiance and the
-// multiple-scattering compensation have no twin yet.
+// mappings), and of `ibl::irradiance`'s evaluation of nine spherical-harmonic coefficients
+// (radiance and irradiance). Needs common.wgsl. The DFG table, prefilter samples, the SH
+// projection and the multiple-scattering compensation have no twin.
 
 // 0 at and below the horizon (n.v <= 0), the fit's value above (ibl::dfg::fit_guard).
 fn brdf_ibl_fit_guard(n_dot_v: f32, v: f32) -> f32 {
@@ -125,4 +126,124 @@ fn ibl_dfg_mip_from_roughness_ue4(roughness: f32, cubemap_max_mip: f32) -> f32 {
 fn ibl_dfg_roughness_from_mip_ue4(mip: f32, cubemap_max_mip: f32) -> f32 {
     let level_from_1x1 = cubemap_max_mip - 1.0 - mip;
     return min(exp2((1.0 - level_from_1x1) * 0.8333333333333334), BRDF_F32_MAX);
+}
+
+// The real spherical harmonics' constants of bands 0..2 (Ramamoorthi and Hanrahan 2001, "An
+// Efficient Representation for Irradiance Environment Maps", eq. 3), rounded to f32 from the
+// exact values: 1 / (2 sqrt(pi)), sqrt(3 / (4 pi)), sqrt(15 / pi) / 2, sqrt(5 / pi) / 4,
+// sqrt(15 / pi) / 4.
+const BRDF_SH_C0: f32 = 0.28209479177387814;
+const BRDF_SH_C1: f32 = 0.4886025119029199;
+const BRDF_SH_C2: f32 = 1.0925484305920792;
+const BRDF_SH_C3: f32 = 0.31539156525252005;
+const BRDF_SH_C4: f32 = 0.5462742152960396;
+// Their eq. 13's c1..c5 with the clamped cosine's A_0 = pi, A_1 = 2 pi / 3, A_2 = pi / 4,
+// evaluated in f64 and rounded to f32 (c1 = A_2 C4, c2 = A_1 C1 / 2, c3 = 3 A_2 C3,
+// c4 = A_0 C0, c5 = A_2 C3), as the Rust kernel rounds them.
+const BRDF_SH_K1: f32 = 0.4290427654048917;
+const BRDF_SH_K2: f32 = 0.5116633539732441;
+const BRDF_SH_K3: f32 = 0.7431238683011271;
+const BRDF_SH_K4: f32 = 0.8862269254527579;
+const BRDF_SH_K5: f32 = 0.24770795610037571;
+
+// The nine real spherical harmonics of bands 0..2 at a unit d (Ramamoorthi and Hanrahan 2001,
+// eq. 3) in the order k = l (l + 1) + m: C0, C1 y, C1 z, C1 x, C2 x y, C2 y z,
+// C3 (3 z^2 - 1), C2 x z, C4 (x^2 - y^2), without the Condon-Shortley phase (every constant
+// positive; bases with the phase negate k = 1, 3, 5, 7). Not normalised here.
+fn ibl_irradiance_sh9_basis(d_x: f32, d_y: f32, d_z: f32) -> array<f32, 9> {
+    return array<f32, 9>(
+        BRDF_SH_C0,
+        BRDF_SH_C1 * d_y,
+        BRDF_SH_C1 * d_z,
+        BRDF_SH_C1 * d_x,
+        BRDF_SH_C2 * d_x * d_y,
+        BRDF_SH_C2 * d_y * d_z,
+        BRDF_SH_C3 * (3.0 * d_z * d_z - 1.0),
+        BRDF_SH_C2 * d_x * d_z,
+        BRDF_SH_C4 * (d_x * d_x - d_y * d_y),
+    );
+}
+
+// One channel of sum_k L_k Y_k(x, y, z), the basis in the order k = l (l + 1) + m without the
+// Condon-Shortley phase (ibl::irradiance::sh9_basis), summed in order k = 0..8.
+fn brdf_ibl_sh9_eval(
+    l0: f32, l1: f32, l2: f32, l3: f32, l4: f32, l5: f32, l6: f32, l7: f32, l8: f32,
+    x: f32, y: f32, z: f32,
+) -> f32 {
+    let y0 = BRDF_SH_C0;
+    let y1 = BRDF_SH_C1 * y;
+    let y2 = BRDF_SH_C1 * z;
+    let y3 = BRDF_SH_C1 * x;
+    let y4 = BRDF_SH_C2 * x * y;
+    let y5 = BRDF_SH_C2 * y * z;
+    let y6 = BRDF_SH_C3 * (3.0 * z * z - 1.0);
+    let y7 = BRDF_SH_C2 * x * z;
+    let y8 = BRDF_SH_C4 * (x * x - y * y);
+    return l0 * y0 + l1 * y1 + l2 * y2 + l3 * y3 + l4 * y4 + l5 * y5 + l6 * y6 + l7 * y7
+        + l8 * y8;
+}
+
+// The band-limited radiance sum_k L_k Y_k(dir) of nine RGB spherical-harmonic coefficients
+// (Ramamoorthi and Hanrahan 2001, eq. 3 for the basis) at a unit dir, per channel: the
+// environment seen through SH9 (it rings and may go negative near sharp features). The
+// coefficients as Sh9::from_coeffs takes them, coefficient by coefficient, r g b each.
+fn ibl_irradiance_Sh9_eval(
+    coeffs_0_r: f32, coeffs_0_g: f32, coeffs_0_b: f32,
+    coeffs_1_r: f32, coeffs_1_g: f32, coeffs_1_b: f32,
+    coeffs_2_r: f32, coeffs_2_g: f32, coeffs_2_b: f32,
+    coeffs_3_r: f32, coeffs_3_g: f32, coeffs_3_b: f32,
+    coeffs_4_r: f32, coeffs_4_g: f32, coeffs_4_b: f32,
+    coeffs_5_r: f32, coeffs_5_g: f32, coeffs_5_b: f32,
+    coeffs_6_r: f32, coeffs_6_g: f32, coeffs_6_b: f32,
+    coeffs_7_r: f32, coeffs_7_g: f32, coeffs_7_b: f32,
+    coeffs_8_r: f32, coeffs_8_g: f32, coeffs_8_b: f32,
+    dir_x: f32, dir_y: f32, dir_z: f32,
+) -> vec3<f32> {
+    return vec3<f32>(
+        brdf_ibl_sh9_eval(coeffs_0_r, coeffs_1_r, coeffs_2_r, coeffs_3_r, coeffs_4_r,
+            coeffs_5_r, coeffs_6_r, coeffs_7_r, coeffs_8_r, dir_x, dir_y, dir_z),
+        brdf_ibl_sh9_eval(coeffs_0_g, coeffs_1_g, coeffs_2_g, coeffs_3_g, coeffs_4_g,
+            coeffs_5_g, coeffs_6_g, coeffs_7_g, coeffs_8_g, dir_x, dir_y, dir_z),
+        brdf_ibl_sh9_eval(coeffs_0_b, coeffs_1_b, coeffs_2_b, coeffs_3_b, coeffs_4_b,
+            coeffs_5_b, coeffs_6_b, coeffs_7_b, coeffs_8_b, dir_x, dir_y, dir_z),
+    );
+}
+
+// One channel of Ramamoorthi and Hanrahan 2001's eq. 13 (in the Rust kernel's grouping):
+// E = c1 L22 (x^2 - y^2) + c3 L20 z^2 + c4 L00 - c5 L20
+//   + 2 c1 (L2-2 xy + L21 xz + L2-1 yz) + 2 c2 (L11 x + L1-1 y + L10 z).
+fn brdf_ibl_sh9_irradiance(
+    l00: f32, l1m1: f32, l10: f32, l11: f32, l2m2: f32, l2m1: f32, l20: f32, l21: f32,
+    l22: f32, x: f32, y: f32, z: f32,
+) -> f32 {
+    let linear = (l11 * x + l1m1 * y + l10 * z) * (2.0 * BRDF_SH_K2);
+    let cross = (l2m2 * (x * y) + l21 * (x * z) + l2m1 * (y * z)) * (2.0 * BRDF_SH_K1);
+    return l22 * (BRDF_SH_K1 * (x * x - y * y)) + l20 * (BRDF_SH_K3 * z * z) + l00 * BRDF_SH_K4
+        - l20 * BRDF_SH_K5 + cross + linear;
+}
+
+// Irradiance E(n) = sum_lm A_l L_lm Y_lm(n) at a unit normal n from nine RGB spherical-harmonic
+// coefficients of the radiance (Ramamoorthi and Hanrahan 2001, eq. 13; A_l the clamped
+// cosine's bands, eq. 9), per channel. Not clamped: SH9 of a sharp light can give E < 0 facing
+// away from it. A constant environment L gives pi L.
+fn ibl_irradiance_Sh9_irradiance(
+    coeffs_0_r: f32, coeffs_0_g: f32, coeffs_0_b: f32,
+    coeffs_1_r: f32, coeffs_1_g: f32, coeffs_1_b: f32,
+    coeffs_2_r: f32, coeffs_2_g: f32, coeffs_2_b: f32,
+    coeffs_3_r: f32, coeffs_3_g: f32, coeffs_3_b: f32,
+    coeffs_4_r: f32, coeffs_4_g: f32, coeffs_4_b: f32,
+    coeffs_5_r: f32, coeffs_5_g: f32, coeffs_5_b: f32,
+    coeffs_6_r: f32, coeffs_6_g: f32, coeffs_6_b: f32,
+    coeffs_7_r: f32, coeffs_7_g: f32, coeffs_7_b: f32,
+    coeffs_8_r: f32, coeffs_8_g: f32, coeffs_8_b: f32,
+    n_x: f32, n_y: f32, n_z: f32,
+) -> vec3<f32> {
+    return vec3<f32>(
+        brdf_ibl_sh9_irradiance(coeffs_0_r, coeffs_1_r, coeffs_2_r, coeffs_3_r, coeffs_4_r,
+            coeffs_5_r, coeffs_6_r, coeffs_7_r, coeffs_8_r, n_x, n_y, n_z),
+        brdf_ibl_sh9_irradiance(coeffs_0_g, coeffs_1_g, coeffs_2_g, coeffs_3_g, coeffs_4_g,
+            coeffs_5_g, coeffs_6_g, coeffs_7_g, coeffs_8_g, n_x, n_y, n_z),
+        brdf_ibl_sh9_irradiance(coeffs_0_b, coeffs_1_b, coeffs_2_b, coeffs_3_b, coeffs_4_b,
+            coeffs_5_b, coeffs_6_b, coeffs_7_b, coeffs_8_b, n_x, n_y, n_z),
+    );
 }

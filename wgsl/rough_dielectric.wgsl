@@ -1,14 +1,15 @@
-// brdf: the rough dielectric's generalized half vector, the twin of the Rust module
-// `rough_dielectric` (its BSDF, pdf and samplers have no twins yet). Needs common.wgsl.
+// brdf: the rough dielectric BSDF of Walter et al. 2007, the twins of the Rust module
+// `rough_dielectric`: the generalized half vector, the BSDF (reflection and transmission, from
+// either side, radiance or importance transport) and the pdf of both lobes, over a microfacet
+// model given as a u32 (0 = GGX, 1 = Beckmann) with widths (alpha_x, alpha_y). The samplers
+// have no twins yet. Needs common.wgsl, ggx.wgsl, fresnel.wgsl and beckmann.wgsl.
 
-// The generalized half vector h = +-normalize(wo + eta' wi) with h.z >= 0 (Walter et al. 2007,
-// "Microfacet Models for Refraction through Rough Surfaces", eq. 16): eta' = 1 where wo and wi
-// lie on the same side, else eta for wo outside and 1 / eta for wo inside. Written, as the Rust
-// kernel writes it, as wi + wo / eta' where eta' > 1 (a positive multiple), so that neither
-// term overflows for any eta in (0, MAX]. Where the sum is the zero vector, h is (0, 0, 1).
-fn rough_dielectric_half_vector(
+// (h, |r|^2) for the raw sum r = wi + wo / eta' (eta' > 1) or wi eta' + wo (eta' <= 1), a
+// positive multiple of wo + eta' wi: h = +-normalize(r) with h.z >= 0, (0, 0, 1) where r is the
+// zero vector (then |r|^2 = 0, the degenerate pair of the Rust kernel).
+fn brdf_rough_dielectric_half(
     wo_x: f32, wo_y: f32, wo_z: f32, wi_x: f32, wi_y: f32, wi_z: f32, eta: f32,
-) -> vec3<f32> {
+) -> vec4<f32> {
     let etap = select(select(eta, 1.0 / eta, wo_z < 0.0), 1.0, wo_z * wi_z > 0.0);
     let big = etap > 1.0;
     let inv = 1.0 / etap;
@@ -20,5 +21,170 @@ fn rough_dielectric_half_vector(
     // The floor keeps the unused branch of the select finite there.
     let s = select(0.0, 1.0 / sqrt(max(len2, 1e-30)), len2 > 0.0);
     let flip = select(s, -s, z < 0.0);
-    return select(vec3<f32>(0.0, 0.0, 1.0), vec3<f32>(x * flip, y * flip, z * flip), len2 > 0.0);
+    let live = len2 > 0.0;
+    return vec4<f32>(select(0.0, x * flip, live), select(0.0, y * flip, live),
+        select(1.0, z * flip, live), len2);
+}
+
+// The generalized half vector h = +-normalize(wo + eta' wi) with h.z >= 0 (Walter et al. 2007,
+// "Microfacet Models for Refraction through Rough Surfaces", eq. 16): eta' = 1 where wo and wi
+// lie on the same side, else eta for wo outside and 1 / eta for wo inside. Written, as the Rust
+// kernel writes it, as wi + wo / eta' where eta' > 1 (a positive multiple), so that neither
+// term overflows for any eta in (0, MAX]. Where the sum is the zero vector, h is (0, 0, 1).
+fn rough_dielectric_half_vector(
+    wo_x: f32, wo_y: f32, wo_z: f32, wi_x: f32, wi_y: f32, wi_z: f32, eta: f32,
+) -> vec3<f32> {
+    let h = brdf_rough_dielectric_half(wo_x, wo_y, wo_z, wi_x, wi_y, wi_z, eta);
+    return vec3<f32>(h.x, h.y, h.z);
+}
+
+// a b for finite a, b >= 0, capped at the largest finite f32 (the Rust kernel's cap_mul): a
+// later factor 0 then gives 0.
+fn brdf_rough_dielectric_cap_mul(a: f32, b: f32) -> f32 {
+    return min(a * b, BRDF_F32_MAX);
+}
+
+// 1 / p for p >= 0, capped at the largest finite f32. Below f32's smallest normal the cap is
+// taken (1 / p there is within a factor 4 of it or beyond, and WGSL's x / y promises no
+// accuracy for such a divisor); the floor keeps the unused branch within that promise.
+fn brdf_rough_dielectric_recip(p: f32) -> f32 {
+    return select(BRDF_F32_MAX, min(1.0 / max(p, 1.17549435e-38), BRDF_F32_MAX),
+        p >= 1.17549435e-38);
+}
+
+// (d(omega_h) / d(omega_i), s): the refraction Jacobian |i.h| / (i.h + o.h / eta')^2 (Walter et
+// al. 2007, eq. 17) capped at the largest finite f32, formed as |i.h| eta'^2 / (eta' i.h + o.h)^2
+// where eta' < 1 so that o.h / eta' cannot overflow, 0 where the sum is 0; and the transport
+// factor s = (1 / eta')^2 capped (transport 0, radiance) or 1 (transport 1, importance).
+fn brdf_rough_dielectric_jacobian(o_h: f32, i_h: f32, etap: f32, transport: u32) -> vec2<f32> {
+    let small = etap < 1.0;
+    let sum = select(i_h + o_h / etap, fma(etap, i_h, o_h), small);
+    let num = select(abs(i_h), min(abs(i_h) * (etap * etap), BRDF_F32_MAX), small);
+    let ss = sum * sum;
+    let q = select(BRDF_F32_MAX, min(num / max(ss, 1.17549435e-38), BRDF_F32_MAX),
+        ss >= 1.17549435e-38);
+    let dwh = select(q, 0.0, sum == 0.0);
+    // (1 / eta')^2 capped: 1 / eta' below 2^64 squares to at most (2^64 - 2^40)^2, which rounds
+    // to a finite f32; from 2^64 on the square is beyond the largest f32, so the cap.
+    let r = min(1.0 / etap, BRDF_F32_MAX);
+    let rc = min(r, 18446742974197923840.0);
+    let radiance = select(rc * rc, BRDF_F32_MAX, r >= 18446744073709551616.0);
+    return vec2<f32>(dwh, select(1.0, radiance, transport == 0u));
+}
+
+// D(h) of the model (0 = GGX, 1 = Beckmann).
+fn brdf_rough_dielectric_d(model: u32, alpha_x: f32, alpha_y: f32, h: vec4<f32>) -> f32 {
+    return select(ggx_Ggx_d(alpha_x, alpha_y, h.x, h.y, h.z),
+        beckmann_Beckmann_d(alpha_x, alpha_y, h.x, h.y, h.z), model == 1u);
+}
+
+// The height-correlated G2 = 1 / (1 + Lambda(wo) + Lambda(wi)) of the model (Heitz 2014,
+// "Understanding the Masking-Shadowing Function", eq. 99), in the twins' pole-free forms
+// (ggx_Ggx_g2_correlated, beckmann_Beckmann_g2_correlated): the Rust kernel's 1 / (1 + Lambda +
+// Lambda) with Lambda capped at f32's largest value would leave f32's range in the sum.
+fn brdf_rough_dielectric_g2(
+    model: u32, alpha_x: f32, alpha_y: f32,
+    wo_x: f32, wo_y: f32, wo_z: f32, wi_x: f32, wi_y: f32, wi_z: f32,
+) -> f32 {
+    return select(
+        ggx_Ggx_g2_correlated(alpha_x, alpha_y, wo_x, wo_y, wo_z, wi_x, wi_y, wi_z),
+        beckmann_Beckmann_g2_correlated(alpha_x, alpha_y, wo_x, wo_y, wo_z, wi_x, wi_y, wi_z),
+        model == 1u);
+}
+
+// (f, pdf) of both lobes at a pair, sharing one half vector (the Rust kernel's `lobes`): with
+// F = fresnel_dielectric(wo.h, eta),
+// f = D G2 F / (4 |wo.z| |wi.z|) on one side, s D G2 (1 - F) |wo.h| dwh / (|wo.z| |wi.z|)
+// across; pdf = D_v(h) F / (4 |wo.h|) and D_v(h) dwh (1 - F), D_v the visible-normal density
+// seen from sign(wo.z) wo; both 0 unless each direction sees the facet's own side, h is not
+// degenerate and eta != 1.
+fn brdf_rough_dielectric_lobes(
+    model: u32, alpha_x: f32, alpha_y: f32,
+    wo_x: f32, wo_y: f32, wo_z: f32, wi_x: f32, wi_y: f32, wi_z: f32, eta: f32, transport: u32,
+) -> vec2<f32> {
+    let h = brdf_rough_dielectric_half(wo_x, wo_y, wo_z, wi_x, wi_y, wi_z, eta);
+    let reflect = wo_z * wi_z > 0.0;
+    let etap = select(select(eta, 1.0 / eta, wo_z < 0.0), 1.0, reflect);
+    let o_h = wo_x * h.x + wo_y * h.y + wo_z * h.z;
+    let i_h = wi_x * h.x + wi_y * h.y + wi_z * h.z;
+    // Each direction must see the facet's own side; this also drops the horizon.
+    let facing = (o_h * wo_z > 0.0) & (i_h * wi_z > 0.0);
+    let live = facing & (h.w > 0.0) & (eta != 1.0);
+    let f_r = fresnel_dielectric(o_h, eta);
+    let t = 1.0 - f_r;
+    let dg = brdf_rough_dielectric_d(model, alpha_x, alpha_y, h)
+        * brdf_rough_dielectric_g2(model, alpha_x, alpha_y, wo_x, wo_y, wo_z, wi_x, wi_y, wi_z);
+    let inv_cos = brdf_rough_dielectric_recip(abs(wo_z) * abs(wi_z));
+    let fr = brdf_rough_dielectric_cap_mul(brdf_rough_dielectric_cap_mul(dg, f_r),
+        0.25 * inv_cos);
+    let j = brdf_rough_dielectric_jacobian(o_h, i_h, etap, transport);
+    let ft = brdf_rough_dielectric_cap_mul(
+        brdf_rough_dielectric_cap_mul(brdf_rough_dielectric_cap_mul(dg, t),
+            brdf_rough_dielectric_cap_mul(abs(o_h), inv_cos)),
+        j.x);
+    let f = select(0.0, select(brdf_rough_dielectric_cap_mul(ft, j.y), fr, reflect), live);
+    let up = select(1.0, -1.0, wo_z < 0.0);
+    let pm = select(
+        ggx_Ggx_d_visible(alpha_x, alpha_y, up * wo_x, up * wo_y, up * wo_z, h.x, h.y, h.z),
+        beckmann_Beckmann_d_visible(alpha_x, alpha_y, up * wo_x, up * wo_y, up * wo_z,
+            h.x, h.y, h.z),
+        model == 1u);
+    let pr = brdf_rough_dielectric_cap_mul(
+        brdf_rough_dielectric_cap_mul(pm, brdf_rough_dielectric_recip(4.0 * abs(o_h))), f_r);
+    let pt = brdf_rough_dielectric_cap_mul(brdf_rough_dielectric_cap_mul(pm, j.x), t);
+    let p = select(0.0, select(pt, pr, reflect), live);
+    return vec2<f32>(f, p);
+}
+
+// The rough dielectric BSDF f(wo, wi) (Walter et al. 2007, eqs. 20 and 21), reflection and
+// transmission together: f = D(h) G2 F / (4 |wo.z| |wi.z|) for wo, wi on the same side, and
+// f = s D(h) G2 (1 - F) |wi.h| |wo.h| / (|wi.z| |wo.z| (wi.h + wo.h / eta')^2) across, with
+// h = rough_dielectric_half_vector, F = fresnel_dielectric(wo.h, eta) (1 under total internal
+// reflection), s = 1 / eta'^2 for transport 0 (radiance) and 1 for transport 1 (importance).
+// 0 on the horizon, for a back-facing h and for eta = 1; capped at the largest finite f32.
+// eta in (0, MAX]; the exact Fresnel factor's range, eta in [1/256, 256] (fresnel.wgsl).
+fn rough_dielectric_eval(
+    model: u32, alpha_x: f32, alpha_y: f32,
+    wo_x: f32, wo_y: f32, wo_z: f32, wi_x: f32, wi_y: f32, wi_z: f32, eta: f32, transport: u32,
+) -> f32 {
+    return brdf_rough_dielectric_lobes(model, alpha_x, alpha_y, wo_x, wo_y, wo_z,
+        wi_x, wi_y, wi_z, eta, transport).x;
+}
+
+// pdf (solid angle) of the rough dielectric samplers at wi, both lobes combined (Walter et al.
+// 2007, eqs. 14 and 17): F D_v(h) / (4 |wo.h|) for wi on wo's side and
+// (1 - F) D_v(h) |wi.h| / (wi.h + wo.h / eta')^2 across, D_v the visible-normal density of the
+// facet seen from wo's side (ggx_Ggx_d_visible of sign(wo.z) wo); 0 where the BSDF is 0 by an
+// edge; capped at the largest finite f32.
+fn rough_dielectric_pdf(
+    model: u32, alpha_x: f32, alpha_y: f32,
+    wo_x: f32, wo_y: f32, wo_z: f32, wi_x: f32, wi_y: f32, wi_z: f32, eta: f32,
+) -> f32 {
+    return brdf_rough_dielectric_lobes(model, alpha_x, alpha_y, wo_x, wo_y, wo_z,
+        wi_x, wi_y, wi_z, eta, 1u).y;
+}
+
+// Walter et al. 2007's BTDF without its Fresnel factor for GGX in radiance transport, and wo.h
+// (the Rust kernel's btdf_without_fresnel, for transmission_dielectric_bsdf):
+// (D(h) G2 |wi.h| |wo.h| / (|wi.z| |wo.z| (wi.h + wo.h / eta')^2) s, wo.h), 0 where the pair is
+// no refraction pair (same side, back-facing h, degenerate h, eta = 1).
+fn brdf_rough_dielectric_btdf_ggx(
+    alpha_x: f32, alpha_y: f32,
+    wo_x: f32, wo_y: f32, wo_z: f32, wi_x: f32, wi_y: f32, wi_z: f32, eta: f32,
+) -> vec2<f32> {
+    let h = brdf_rough_dielectric_half(wo_x, wo_y, wo_z, wi_x, wi_y, wi_z, eta);
+    let reflect = wo_z * wi_z > 0.0;
+    let etap = select(select(eta, 1.0 / eta, wo_z < 0.0), 1.0, reflect);
+    let o_h = wo_x * h.x + wo_y * h.y + wo_z * h.z;
+    let i_h = wi_x * h.x + wi_y * h.y + wi_z * h.z;
+    let facing = (o_h * wo_z > 0.0) & (i_h * wi_z > 0.0);
+    let live = facing & (h.w > 0.0) & !reflect & (eta != 1.0);
+    let j = brdf_rough_dielectric_jacobian(o_h, i_h, etap, 0u);
+    let dg = ggx_Ggx_d(alpha_x, alpha_y, h.x, h.y, h.z)
+        * ggx_Ggx_g2_correlated(alpha_x, alpha_y, wo_x, wo_y, wo_z, wi_x, wi_y, wi_z);
+    let inv_cos = brdf_rough_dielectric_recip(abs(wo_z) * abs(wi_z));
+    let ft = brdf_rough_dielectric_cap_mul(
+        brdf_rough_dielectric_cap_mul(dg, brdf_rough_dielectric_cap_mul(abs(o_h), inv_cos)),
+        j.x);
+    return vec2<f32>(select(0.0, brdf_rough_dielectric_cap_mul(ft, j.y), live), o_h);
 }

@@ -1,8 +1,9 @@
 // brdf: samplers and the densities a shader needs to weight its samples, the twins of the
 // Rust module `sampling` (the cosine-hemisphere sampler and pdf, the half-vector-to-reflection
-// Jacobian, GGX's D cos and visible-normal samplers, the D cos and visible-normal pdfs and
-// GGX's reflection pdf). Needs common.wgsl, ggx.wgsl and beckmann.wgsl. The Beckmann samplers
-// and the reflection samplers with their weights have no twin yet.
+// Jacobian, GGX's D cos and visible-normal samplers, the D cos and visible-normal pdfs, GGX's
+// and Beckmann's reflection pdfs, and GGX's reflection samplers with their weights). Needs
+// common.wgsl, ggx.wgsl and beckmann.wgsl. The Beckmann samplers (which need erf_inv) have no
+// twin yet.
 //
 // Angles: WGSL promises sin and cos only on [-pi, pi] (absolute error 2^-11 there), so
 // cos(2 pi u) and sin(2 pi u) are taken as -cos(t) and -sin(t) with t = (2 u - 1) pi', pi' the
@@ -141,6 +142,24 @@ fn sampling_ggx_reflection_pdf(
     return select(0.0, min(inv * d, BRDF_F32_MAX), visible);
 }
 
+// The pdf of the reflected direction wi under Beckmann visible-normal sampling: D(h) / (4 (wo.z
+// + wo.z Lambda(wo))) with h = normalize(wo + wi) (Heitz and d'Eon 2014; Walter et al. 2007,
+// eq. 14), capped at the largest finite f32; 0 where wo is at or below the horizon, wo.h <= 0
+// or wi = 0. The same form as sampling_ggx_reflection_pdf.
+fn sampling_beckmann_reflection_pdf(
+    alpha_x: f32, alpha_y: f32, wo_x: f32, wo_y: f32, wo_z: f32, wi_x: f32, wi_y: f32, wi_z: f32,
+) -> f32 {
+    let h = brdf_normalize_or_z(vec3<f32>(wo_x + wi_x, wo_y + wi_y, wo_z + wi_z));
+    let c = wo_z;
+    let inv = min(1.0 / (4.0 * (c + beckmann_Beckmann_cos_lambda(alpha_x, alpha_y, wo_x, wo_y,
+        wo_z))), BRDF_F32_MAX);
+    let wi_zero = (wi_x == 0.0) & (wi_y == 0.0) & (wi_z == 0.0);
+    let wo_dot_h = fma(wo_x, h.x, fma(wo_y, h.y, wo_z * h.z));
+    let visible = (c > 0.0) & (wo_dot_h > 0.0) & !wi_zero;
+    let d = beckmann_Beckmann_d(alpha_x, alpha_y, h.x, h.y, h.z);
+    return select(0.0, min(inv * d, BRDF_F32_MAX), visible);
+}
+
 // The pdf D(m) max(m.z, 0) of sampling the normal from D cos (Walter et al. 2007, eq. 24) for
 // the model `model` (0 = GGX, 1 = Beckmann).
 fn sampling_d_cos_pdf(
@@ -162,4 +181,56 @@ fn sampling_ggx_d_cos(alpha_x: f32, alpha_y: f32, u1: f32, u2: f32) -> vec4<f32>
     let cs = brdf_cos_sin_2pi(brdf_clamp_u(u2));
     let m = brdf_normalize_or_z(vec3<f32>(-ax * (r * cs.x), -ay * (r * cs.y), 1.0));
     return vec4<f32>(m, sampling_d_cos_pdf(0u, alpha_x, alpha_y, m.x, m.y, m.z));
+}
+
+// The GGX reflection sample without its Fresnel factor (the Rust kernel's reflection_parts):
+// (wi, pdf, G2 / G1(wo), wo.m) for the visible normal m of sampling_ggx_vndf_spherical_cap,
+// wi = 2 (wo.m) m - wo, pdf = sampling_ggx_reflection_pdf(wo, wi). G2 / G1(wo) =
+// (1 + Lambda(wo)) / (1 + Lambda(wo) + Lambda(wi)) is written pole-free as
+// |i.z| (|o.z| + s_o) / (|i.z| s_o + |o.z| s_i), s = sqrt(z^2 + q) of each direction
+// (brdf_ggx_smith; Lambda = (s - |z|) / (2 |z|)): the Rust kernel's form with each Lambda
+// capped at f32's largest value would leave f32's range in the sum. 0 unless wo and wi lie
+// above the horizon.
+fn brdf_sampling_ggx_reflection_parts(
+    alpha_x: f32, alpha_y: f32, wo_x: f32, wo_y: f32, wo_z: f32, u1: f32, u2: f32,
+) -> array<f32, 6> {
+    let m = sampling_ggx_vndf_spherical_cap(alpha_x, alpha_y, wo_x, wo_y, wo_z, u1, u2);
+    let o_m = fma(wo_x, m.x, fma(wo_y, m.y, wo_z * m.z));
+    let k = 2.0 * o_m;
+    let wi = vec3<f32>(m.x * k - wo_x, m.y * k - wo_y, m.z * k - wo_z);
+    let pdf = sampling_ggx_reflection_pdf(alpha_x, alpha_y, wo_x, wo_y, wo_z, wi.x, wi.y, wi.z);
+    let o = brdf_ggx_smith(alpha_x, alpha_y, vec3<f32>(wo_x, wo_y, wo_z));
+    let i = brdf_ggx_smith(alpha_x, alpha_y, wi);
+    let den = i.x * o.z + o.x * i.z;
+    let above = (wo_z > 0.0) & (wi.z > 0.0);
+    // The floor keeps the unused branch finite where both cosines are 0.
+    let ratio = select(0.0, i.x * (o.x + o.z) / max(den, 1.17549435e-38), above);
+    return array<f32, 6>(wi.x, wi.y, wi.z, pdf, ratio, saturate(o_m));
+}
+
+// Samples the Cook-Torrance reflection lobe of a GGX surface with a constant Fresnel factor F
+// (>= 0): (wi.x, wi.y, wi.z, pdf, weight) with the visible normal m of
+// sampling_ggx_vndf_spherical_cap (Heitz 2018, "Sampling the GGX Distribution of Visible
+// Normals"; Dupuy and Benyoub 2023), wi = 2 (wo.m) m - wo, pdf =
+// sampling_ggx_reflection_pdf(wo, wi) and the weight f wi.z / pdf = F G2 / G1(wo) capped at
+// the largest finite f32 (D and the cosines cancel; Heitz and d'Eon 2014). A wi reflected
+// below the horizon keeps its pdf with weight 0; wo at or below the horizon gives pdf 0 and
+// weight 0. u1, u2 clamped into [0, 1).
+fn sampling_ggx_reflection(
+    alpha_x: f32, alpha_y: f32, wo_x: f32, wo_y: f32, wo_z: f32, u1: f32, u2: f32,
+    fresnel: f32,
+) -> array<f32, 5> {
+    let p = brdf_sampling_ggx_reflection_parts(alpha_x, alpha_y, wo_x, wo_y, wo_z, u1, u2);
+    return array<f32, 5>(p[0], p[1], p[2], p[3], min(p[4] * fresnel, BRDF_F32_MAX));
+}
+
+// sampling_ggx_reflection with a constant RGB Fresnel factor: (wi.x, wi.y, wi.z, pdf,
+// weight_r, weight_g, weight_b), the weight F_c G2 / G1(wo) per channel.
+fn sampling_ggx_reflection_rgb(
+    alpha_x: f32, alpha_y: f32, wo_x: f32, wo_y: f32, wo_z: f32, u1: f32, u2: f32,
+    fresnel_r: f32, fresnel_g: f32, fresnel_b: f32,
+) -> array<f32, 7> {
+    let p = brdf_sampling_ggx_reflection_parts(alpha_x, alpha_y, wo_x, wo_y, wo_z, u1, u2);
+    return array<f32, 7>(p[0], p[1], p[2], p[3], min(p[4] * fresnel_r, BRDF_F32_MAX),
+        min(p[4] * fresnel_g, BRDF_F32_MAX), min(p[4] * fresnel_b, BRDF_F32_MAX));
 }
