@@ -239,6 +239,22 @@ impl<T: Real> Layered<T> {
         })
     }
 
+    /// [`with_clearcoat_normal`](Self::with_clearcoat_normal) from world space: the coat's
+    /// world-space unit normal `n` (glTF's `clearcoatNormalTexture` decoded through the
+    /// mesh's TBN, as the base's normal map) taken into the local frame of the shading point
+    /// `sp`, the same frame [`eval_world`](Self::eval_world) uses; equal to
+    /// `self.with_clearcoat_normal(sp.local(n))`, with its checks: finite, unit length within
+    /// 1e-3 and on the outer side of the shading normal (n . N > 0), else [`ParamError`]
+    /// (`"clearcoat_normal"`). The material then holds the coat normal of this shading point:
+    /// evaluate it with the same `sp`.
+    pub fn with_clearcoat_normal_world(
+        self,
+        sp: &ShadingPoint<T>,
+        n: V3<T>,
+    ) -> Result<Self, ParamError> {
+        self.with_clearcoat_normal(sp.local(n))
+    }
+
     /// KHR_materials_anisotropy: `strength` in [0, 1] (`"anisotropy_strength"`) and the
     /// direction's `rotation` in radians from the tangent +x, finite (`"anisotropy_rotation"`),
     /// else [`ParamError`].

@@ -3164,6 +3164,10 @@ const NOT_KERNELS: &[(&str, &str)] = &[
     ("Layered::with_volume", "constructor"),
     ("Layered::with_compensation", "constructor"),
     ("Layered::with_iridescence", "validating constructor"),
+    (
+        "Layered::with_clearcoat_normal_world",
+        "validating constructor",
+    ),
     ("Transmission::factor", "getter"),
     ("Volume::thickness", "getter"),
     ("ThinFilm::thickness", "getter"),

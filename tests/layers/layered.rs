@@ -333,3 +333,52 @@ fn world_space_equals_local_space_in_the_tangent_frame() {
     let (wi, q) = m.sample(sp.wo(), 0.4, 0.7);
     assert_eq!((lw, p), (sp.world(wi), q));
 }
+
+/// The coat normal from world space is the local one in the shading point's frame: the
+/// material built from the world-space normal evaluates as the one built from
+/// `sp.local(n)`, bit for bit, in eval, pdf and sample; a world normal below the shading
+/// normal's horizon is refused.
+#[test]
+fn world_space_coat_normal_equals_the_local_one() {
+    use brdf::ShadingPoint;
+    use brdf::frame::Frame;
+    let m = Layered::new(V3::new(0.7, 0.5, 0.2), 0.3, 0.4)
+        .and_then(|m| m.with_clearcoat(0.8, 0.3))
+        .unwrap();
+    let n = V3::new(0.0, 0.6, 0.8);
+    let t = V3::new(0.8, 0.48, -0.36);
+    let frame = Frame::from_axes(t, n.cross(t), n);
+    let sp = ShadingPoint::from_frame(frame, V3::new(0.3, 0.5, 0.812_403_840_463_596));
+    // The coat normal tilted from n towards +x (world).
+    let nc = common::normalize(n + V3::new(0.3, 0.0, 0.0));
+    let world = m.with_clearcoat_normal_world(&sp, nc).unwrap();
+    let local = m.with_clearcoat_normal(sp.local(nc)).unwrap();
+    assert_ne!(local, m, "the tilted normal changes the material");
+    let mut rng = Rng(21);
+    for _ in 0..50 {
+        let l = random_dir(&mut rng);
+        let l = frame.to_world(l);
+        assert_eq!(world.eval_world(&sp, l), local.eval_world(&sp, l));
+        assert_eq!(world.pdf_world(&sp, l), local.pdf_world(&sp, l));
+        let (u1, u2) = (rng.next_f64(), rng.next_f64());
+        assert_eq!(
+            world.sample_world(&sp, u1, u2),
+            local.sample_world(&sp, u1, u2)
+        );
+    }
+    // A smooth coat over a rough base peaks at the view mirrored about its world normal,
+    // not about the shading normal: the coat normal really is nc in world space.
+    let sharp = Layered::new(V3::new(0.7, 0.5, 0.2), 0.0, 0.9)
+        .and_then(|m| m.with_clearcoat(1.0, 0.1))
+        .and_then(|m| m.with_clearcoat_normal_world(&sp, nc))
+        .unwrap();
+    let v = sp.world(sp.wo());
+    let mirror = |about: V3<f64>| about * (2.0 * v.dot(about)) - v;
+    let (at_coat, at_shading) = (
+        sharp.eval_world(&sp, mirror(nc)).x,
+        sharp.eval_world(&sp, mirror(n)).x,
+    );
+    assert!(at_coat > 10.0 * at_shading, "{at_coat} vs {at_shading}");
+    // Below the shading normal's horizon: refused.
+    assert!(m.with_clearcoat_normal_world(&sp, -n).is_err());
+}
