@@ -87,7 +87,15 @@
 //! F_coat(n_c.v), then, scaled by what the coat lets through, the base specular (the mean of
 //! the mixed F at n.v) and the cosine lobes (sheen max(sheenColor) E(n.v) plus the base
 //! diffuse kd baseColor with kd at the hemispherical Schlick average 1/21), the base lobes
-//! scaled by 1 - max(sheenColor) E(n.v). The coat is sampled by GGX visible normals in the
+//! scaled by 1 - max(sheenColor) E(n.v). The estimates miss what depends on the light (the
+//! diffuse weight's v.h, the coat's tilt, a base dimmed by the sheen only towards grazing
+//! lights), so a lobe estimated near 0 can still be bright in places, and a one-sample
+//! estimator divides by the probability of the lobe it drew: fireflies. The probabilities
+//! are therefore floored as the metallic-roughness sampler's: each estimated weight w_i / sum
+//! below [`LOBE_PROBABILITY_MIN`] = 1/16 is raised to it unless w_i = 0 (the lobe is absent
+//! or contributes nothing at this view), then all are renormalized, so every live lobe has
+//! at least 1/16 / (1 + 3/16) = 1/19 and its sample weight is at most 19 times its value
+//! over its own density. The coat is sampled by GGX visible normals in the
 //! coat normal's frame, the base specular by anisotropic GGX visible normals in the rotated
 //! tangent frame, sheen and diffuse by the cosine hemisphere (the sheen lobe is broad). The
 //! pdf is the mixture's.
@@ -109,7 +117,8 @@ use crate::ibl::energy::{fresnel_avg_schlick, kulla_conty_ggx, kulla_conty_ggx_r
 use crate::iridescence::{self, ThinFilm};
 use crate::layers::{anisotropy, clearcoat, sheen};
 use crate::material::{
-    Film, MetallicRoughness, SCHLICK_WEIGHT_AVERAGE, fresnel_and_kd_film, schlick_weights,
+    Film, LOBE_PROBABILITY_MIN, MetallicRoughness, SCHLICK_WEIGHT_AVERAGE, fresnel_and_kd_film,
+    schlick_weights,
 };
 use crate::microfacet::alpha_from_perceptual;
 use crate::real::Real;
@@ -617,7 +626,10 @@ impl<T: Real> Layered<T> {
 
     /// The lobe-selection probabilities at wo: (coat, base specular, cosine lobes), summing
     /// to 1 without transmission; with it, the transmission lobe takes the rest, 1 minus
-    /// their sum (module docs, "Sampling"). NaN where a component of wo is NaN or infinite.
+    /// their sum (module docs, "Sampling"). Each lobe whose estimated albedo at wo is
+    /// positive has at least 1/19 (the floor [`LOBE_PROBABILITY_MIN`] = 1/16 after
+    /// renormalization over at most four lobes: 1/16 / (1 + 3/16)); a lobe of estimate 0
+    /// has 0. NaN where a component of wo is NaN or infinite.
     #[must_use]
     pub fn lobe_probabilities(&self, wo: V3<T>) -> V3<T> {
         self.lobe_weights(wo).0
@@ -651,12 +663,21 @@ impl<T: Real> Layered<T> {
         // Nothing reflects (a black, non-specular base without layers): any lobe will do.
         let empty = sum.simd_le(T::ZERO);
         let safe = T::select(empty, T::ONE, sum);
+        // The floor (module docs, "Sampling"): each lobe of positive weight gets at least
+        // LOBE_PROBABILITY_MIN of the estimate, a lobe of weight 0 (absent, or dark at this
+        // view) keeps 0, then all are renormalized.
+        let lo = T::splat(LOBE_PROBABILITY_MIN);
+        let floor = |w: T| T::select(w.simd_gt(T::ZERO), (w / safe).max(lo), T::ZERO);
+        let (f_coat, f_spec, f_cos, f_trans) =
+            (floor(w_coat), floor(w_spec), floor(w_cos), floor(w_trans));
+        let total = f_coat + f_spec + f_cos + f_trans;
+        let total = T::select(empty, T::ONE, total);
         let p = V3::new(
-            T::select(empty, T::ZERO, w_coat / safe),
-            T::select(empty, T::ZERO, w_spec / safe),
-            T::select(empty, T::ONE, w_cos / safe),
+            T::select(empty, T::ZERO, f_coat / total),
+            T::select(empty, T::ZERO, f_spec / total),
+            T::select(empty, T::ONE, f_cos / total),
         );
-        let p_trans = T::select(empty, T::ZERO, w_trans / safe);
+        let p_trans = T::select(empty, T::ZERO, f_trans / total);
         let bad = any_nonfinite3(wo);
         (
             V3::new(

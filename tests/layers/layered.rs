@@ -382,3 +382,49 @@ fn world_space_coat_normal_equals_the_local_one() {
     // Below the shading normal's horizon: refused.
     assert!(m.with_clearcoat_normal_world(&sp, -n).is_err());
 }
+
+/// The lobe-selection floor (module docs, "Sampling"): a nearly black diffuse under a coat
+/// has an estimated share of 0.022 at normal view, below the floor, and is drawn with at
+/// least 1/19; absent lobes keep probability 0; the floored sampler still matches its pdf.
+#[test]
+fn lobe_probability_floor_is_respected() {
+    let dark = Layered::new(V3::splat(0.002), 0.0, 0.5)
+        .and_then(|m| m.with_clearcoat(1.0, 0.3))
+        .unwrap();
+    // The unfloored estimate at n.v = 1 by the documented weights: coat F_coat(1) = 0.04,
+    // specular (1 - 0.04) 0.04, diffuse (1 - 0.04) kd(1/21) 0.002 with
+    // kd = 1 - (0.04 + 0.96 / 21).
+    let kd = 1.0 - (0.04 + 0.96 / 21.0);
+    let w = [0.04, 0.96 * 0.04, 0.96 * kd * 0.002];
+    let unfloored = w[2] / (w[0] + w[1] + w[2]);
+    let floor = (1.0 / 16.0) / (1.0 + 3.0 / 16.0);
+    assert!(
+        unfloored < 0.5 * floor,
+        "{unfloored}: the case must need the floor"
+    );
+    for theta in [0.0, 40.0, 75.0] {
+        let p = dark.lobe_probabilities(wo_at(theta));
+        println!("dark coated, theta {theta}: P = {p:?} (unfloored diffuse {unfloored:.4} at 0)");
+        for x in [p.x, p.y, p.z] {
+            assert!(x >= floor * (1.0 - 1e-12), "theta {theta}: {p:?}");
+        }
+        assert!((p.x + p.y + p.z - 1.0).abs() < 1e-12);
+    }
+    // Lobes of weight 0 stay at 0: no coat, and a metal has no cosine lobe.
+    let metal = Layered::new(V3::splat(0.9), 1.0, 0.5).unwrap();
+    let p = metal.lobe_probabilities(wo_at(30.0));
+    assert_eq!((p.x, p.y, p.z), (0.0, 1.0, 0.0));
+    // The floored sampler against its pdf.
+    let wo = wo_at(20.0);
+    let folded = |w: V3<f64>| dark.pdf(wo, w) + dark.pdf(wo, flip(w));
+    let stat = chi_square(
+        |u1, u2| {
+            let (wi, p) = dark.sample(wo, u1, u2);
+            assert_eq!(p, dark.pdf(wo, wi));
+            let w = if wi.z < 0.0 { flip(wi) } else { wi };
+            (w.into(), folded(w))
+        },
+        |w| folded(w.into()),
+    );
+    assert_fits("floored dark coated", stat);
+}
