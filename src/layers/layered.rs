@@ -61,7 +61,13 @@
 //! from the base GGX's visible normals, reflected and mirrored through the surface plane
 //! (thin-walled) or refracted (volumetric). The white furnace over the whole sphere stays
 //! at most 1: measured max 0.9983 (`cargo test --test layers transmission:: --
-//! --nocapture`).
+//! --nocapture`). The transmission lobe scatters once: the multiple-scattering compensation
+//! does not cover it, and the thin-walled lobe, being the reflection lobe mirrored (with
+//! the extension's separable G1 G1), loses what the uncompensated white metal loses: at
+//! roughness 1 its albedo is 1 - ln 2 = 0.307 at normal view (where G1(wo) = 1 and the
+//! separable and correlated forms agree), 0.523 at 80 degrees against the correlated
+//! reflection lobe's 0.668 (`cargo test --test transmission gltf:: -- --nocapture` checks
+//! that it is the separable reflection lobe).
 //!
 //! # Iridescence (feature `iridescence`)
 //! `with_iridescence` follows KHR_materials_iridescence ("Implementation Notes"): each lobe's
@@ -69,7 +75,7 @@
 //! F_dielectric' = mix(F_dielectric, F_film(F0_d), f) with F0_d the dielectric's F0 (the
 //! specular weight and colour included, as the extension's `specular_weight * base_f0`) and
 //! F_metal' = mix(F_metal, F_film(baseColor), f), the base colour read as the metal's F0
-//! (`iridescent_conductor_layer`); the film over a base of F0 is [`crate::iridescence`]'s
+//! (`iridescent_conductor_layer`); the film over a base of F0 is `crate::iridescence`'s
 //! Airy summation over the base index (1 + sqrt(F0)) / (1 - sqrt(F0)) with no extinction, in
 //! RGB. The diffuse weight follows the coupling from the mixed Fresnel (glTF:
 //! 1 - max_rgb F_dielectric', the extension's `rgb_mix`), and the compensation lobes read

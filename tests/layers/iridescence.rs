@@ -218,21 +218,15 @@ fn flip(w: V3<f64>) -> V3<f64> {
 
 #[test]
 fn sampler_matches_its_pdf() {
-    let cases: [(Layered<f64>, f64); 2] = [
-        (
-            Layered::new(V3::new(0.9, 0.6, 0.3), 1.0, 0.5)
-                .and_then(|m| m.with_iridescence(1.0, soap()))
-                .unwrap(),
-            50.0,
-        ),
-        (
-            Layered::new(V3::new(0.3, 0.6, 0.9), 0.3, 0.7)
-                .and_then(|m| m.with_clearcoat(0.6, 0.5))
-                .and_then(|m| m.with_iridescence(0.7, ThinFilm::new(250.0, 2.0).unwrap()))
-                .unwrap(),
-            30.0,
-        ),
-    ];
+    // One case (each pdf reads the film twelve times): part metal, so both films count, a
+    // coat and a diffuse lobe, so every lobe of the mixture is drawn.
+    let cases: [(Layered<f64>, f64); 1] = [(
+        Layered::new(V3::new(0.3, 0.6, 0.9), 0.3, 0.7)
+            .and_then(|m| m.with_clearcoat(0.6, 0.5))
+            .and_then(|m| m.with_iridescence(0.7, ThinFilm::new(250.0, 2.0).unwrap()))
+            .unwrap(),
+        30.0,
+    )];
     for (k, (m, theta)) in cases.iter().enumerate() {
         let wo = wo_at(*theta);
         let folded = |w: V3<f64>| m.pdf(wo, w) + m.pdf(wo, flip(w));
