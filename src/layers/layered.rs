@@ -1,7 +1,8 @@
 //! The layered glTF material: the metallic-roughness base of [`MetallicRoughness`] with any
 //! subset of `KHR_materials_sheen`, `KHR_materials_clearcoat`, `KHR_materials_anisotropy`
 //! (and `KHR_materials_specular` / `KHR_materials_ior` through the base's `with_specular` and
-//! `with_ior`), evaluated, sampled and given its pdf on local-frame directions (normal = +z,
+//! `with_ior`; `KHR_materials_transmission` / `KHR_materials_volume` and
+//! `KHR_materials_iridescence` with the features `transmission` and `iridescence`), evaluated, sampled and given its pdf on local-frame directions (normal = +z,
 //! tangent = +x, both directions pointing away from the surface).
 //!
 //! # The composition (the extensions' layering, top to bottom)
@@ -291,6 +292,20 @@ impl<T: Real> Layered<T> {
     /// 1.3). Each lobe's Fresnel is mixed towards the film's by the factor (module docs,
     /// "Iridescence"). Factor 0, and thickness 0 (the Sample Viewer's rule), are the material
     /// without it, bit for bit.
+    ///
+    /// ```
+    /// use brdf::V3;
+    /// use brdf::iridescence::ThinFilm;
+    /// use brdf::layers::layered::Layered;
+    ///
+    /// let plain = Layered::new(V3::new(0.9, 0.6, 0.3), 1.0, 0.3)?;
+    /// let tinted = plain.with_iridescence(1.0, ThinFilm::new(400.0, 1.3)?)?;
+    /// let (wo, wi) = (V3::new(0.0, 0.6, 0.8), V3::new(0.0, -0.6, 0.8));
+    /// assert_ne!(tinted.eval(wo, wi), plain.eval(wo, wi));
+    /// let off = plain.with_iridescence(0.0, ThinFilm::new(400.0, 1.3)?)?;
+    /// assert_eq!(off.eval(wo, wi), plain.eval(wo, wi));
+    /// # Ok::<(), brdf::ParamError>(())
+    /// ```
     #[cfg(feature = "iridescence")]
     pub fn with_iridescence(self, factor: T, film: ThinFilm<T>) -> Result<Self, ParamError> {
         require::<T>(in_unit(factor), "iridescence", "in [0, 1]")?;
