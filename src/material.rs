@@ -184,28 +184,64 @@ fn mix2<T: Real>(a: T, b: T, w: T, one_minus_w: T) -> T {
 /// ulp of 1 at grazing half vectors and for F0 near 1, where the subtraction would cancel.
 #[inline]
 pub(crate) fn fresnel_and_kd<T: Real>(
-    (w, one_minus_w): (T, T),
+    weights: (T, T),
     base: V3<T>,
     metallic: T,
     f0_d: V3<T>,
     f90_d: T,
     coupling: DiffuseCoupling,
 ) -> (V3<T>, V3<T>) {
+    fresnel_and_kd_film(weights, base, metallic, f0_d, f90_d, coupling, None)
+}
+
+/// A thin film's reflectance replacing the Schlick Fresnel terms of
+/// [`fresnel_and_kd_film`] (KHR_materials_iridescence): the factor in [0, 1], the film's RGB
+/// reflectance over the dielectric base and over the metal base.
+pub(crate) type Film<T> = (T, V3<T>, V3<T>);
+
+/// [`fresnel_and_kd`] with each lobe's Fresnel mixed towards a thin film's reflectance by its
+/// factor f (KHR_materials_iridescence, "Implementation Notes"):
+/// F_dielectric' = mix(F_dielectric, F_film_d, f), F_metal' = mix(F_metal, F_film_m, f), and
+/// the complements alike, mix(1 - F, 1 - F_film, f), so kd follows the coupling's rule from
+/// the mixed Fresnel (glTF: 1 - max_rgb F_dielectric', the extension's `rgb_mix`). Where
+/// f = 0 each term is selected unmixed: the result is [`fresnel_and_kd`]'s bit for bit.
+#[inline]
+pub(crate) fn fresnel_and_kd_film<T: Real>(
+    (w, one_minus_w): (T, T),
+    base: V3<T>,
+    metallic: T,
+    f0_d: V3<T>,
+    f90_d: T,
+    coupling: DiffuseCoupling,
+    film: Option<Film<T>>,
+) -> (V3<T>, V3<T>) {
     let one_minus_m = T::ONE - metallic;
-    let channel = |base: T, f0: T| {
-        let f_dielectric = mix2(f0, f90_d, w, one_minus_w);
-        let f_metal = mix2(base, T::ONE, w, one_minus_w);
-        let g_dielectric = mix2(T::ONE - f0, T::ONE - f90_d, w, one_minus_w);
-        let g_metal = (T::ONE - base) * one_minus_w;
+    let channel = |base: T, f0: T, film_d: T, film_m: T| {
+        let mut f_dielectric = mix2(f0, f90_d, w, one_minus_w);
+        let mut f_metal = mix2(base, T::ONE, w, one_minus_w);
+        let mut g_dielectric = mix2(T::ONE - f0, T::ONE - f90_d, w, one_minus_w);
+        let mut g_metal = (T::ONE - base) * one_minus_w;
+        if let Some((factor, _, _)) = film {
+            let off = factor.simd_eq(T::ZERO);
+            let mix = |a: T, b: T| T::select(off, a, lerp(a, b, factor));
+            f_dielectric = mix(f_dielectric, film_d);
+            g_dielectric = mix(g_dielectric, T::ONE - film_d);
+            f_metal = mix(f_metal, film_m);
+            g_metal = mix(g_metal, T::ONE - film_m);
+        }
         (
             lerp(f_dielectric, f_metal, metallic),
             lerp(g_dielectric, g_metal, metallic),
             g_dielectric,
         )
     };
-    let (fx, gx, dx) = channel(base.x, f0_d.x);
-    let (fy, gy, dy) = channel(base.y, f0_d.y);
-    let (fz, gz, dz) = channel(base.z, f0_d.z);
+    let (fd, fm) = match film {
+        Some((_, d, m)) => (d, m),
+        None => (V3::splat(T::ZERO), V3::splat(T::ZERO)),
+    };
+    let (fx, gx, dx) = channel(base.x, f0_d.x, fd.x, fm.x);
+    let (fy, gy, dy) = channel(base.y, f0_d.y, fd.y, fm.y);
+    let (fz, gz, dz) = channel(base.z, f0_d.z, fd.z, fm.z);
     let kd = match coupling {
         // 1 - max_rgb F_dielectric = min_rgb (1 - F_dielectric).
         DiffuseCoupling::Gltf => V3::splat(one_minus_m * dx.min(dy).min(dz)),

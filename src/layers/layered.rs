@@ -1,7 +1,8 @@
 //! The layered glTF material: the metallic-roughness base of [`MetallicRoughness`] with any
 //! subset of `KHR_materials_sheen`, `KHR_materials_clearcoat`, `KHR_materials_anisotropy`
 //! (and `KHR_materials_specular` / `KHR_materials_ior` through the base's `with_specular` and
-//! `with_ior`), evaluated, sampled and given its pdf on local-frame directions (normal = +z,
+//! `with_ior`; `KHR_materials_transmission` / `KHR_materials_volume` and
+//! `KHR_materials_iridescence` with the features `transmission` and `iridescence`), evaluated, sampled and given its pdf on local-frame directions (normal = +z,
 //! tangent = +x, both directions pointing away from the surface).
 //!
 //! # The composition (the extensions' layering, top to bottom)
@@ -61,21 +62,56 @@
 //! from the base GGX's visible normals, reflected and mirrored through the surface plane
 //! (thin-walled) or refracted (volumetric). The white furnace over the whole sphere stays
 //! at most 1: measured max 0.9983 (`cargo test --test layers transmission:: --
-//! --nocapture`).
+//! --nocapture`). The transmission lobe scatters once: the multiple-scattering compensation
+//! does not cover it, and the thin-walled lobe, being the reflection lobe mirrored (with
+//! the extension's separable G1 G1), loses what the uncompensated white metal loses: at
+//! roughness 1 its albedo is 1 - ln 2 = 0.307 at normal view (where G1(wo) = 1 and the
+//! separable and correlated forms agree), 0.523 at 80 degrees against the correlated
+//! reflection lobe's 0.668 (`cargo test --test transmission gltf:: -- --nocapture` checks
+//! that it is the separable reflection lobe).
+//!
+//! # Iridescence (feature `iridescence`)
+//! `with_iridescence` follows KHR_materials_iridescence ("Implementation Notes"): each lobe's
+//! Fresnel is mixed towards the thin film's by the factor f,
+//! F_dielectric' = mix(F_dielectric, F_film(F0_d), f) with F0_d the dielectric's F0 (the
+//! specular weight and colour included, as the extension's `specular_weight * base_f0`) and
+//! F_metal' = mix(F_metal, F_film(baseColor), f), the base colour read as the metal's F0
+//! (`iridescent_conductor_layer`); the film over a base of F0 is `crate::iridescence`'s
+//! Airy summation over the base index (1 + sqrt(F0)) / (1 - sqrt(F0)) with no extinction, in
+//! RGB. The diffuse weight follows the coupling from the mixed Fresnel (glTF:
+//! 1 - max_rgb F_dielectric', the extension's `rgb_mix`), and the compensation lobes read
+//! F_avg mixed the same way, the film's average read at mu* = 0.456 where Schlick's weight
+//! is its average 1/21. Two choices differ from the Khronos Sample Viewer (`pbr.frag`,
+//! `iridescence.glsl`): the film is read at v.h, as every Fresnel of the material (the viewer
+//! reads it once at n.v, which is not reciprocal), and by exact Fresnel with both
+//! polarizations (the viewer uses Schlick's form); as in the viewer, thickness 0 turns the
+//! film off (factor 0), which leaves the base's Schlick Fresnel where a vanishing film would
+//! give the exact one. The film's outside medium is air, also under a clearcoat (the viewer's
+//! `evalIridescence(1.0, ...)`).
 //!
 //! # Sampling
 //! One-sample lobe selection by the lobes' estimated albedos at wo: coat clearcoat
 //! F_coat(n_c.v), then, scaled by what the coat lets through, the base specular (the mean of
 //! the mixed F at n.v) and the cosine lobes (sheen max(sheenColor) E(n.v) plus the base
 //! diffuse kd baseColor with kd at the hemispherical Schlick average 1/21), the base lobes
-//! scaled by 1 - max(sheenColor) E(n.v). The coat is sampled by GGX visible normals in the
+//! scaled by 1 - max(sheenColor) E(n.v). The estimates miss what depends on the light (the
+//! diffuse weight's v.h, the coat's tilt, a base dimmed by the sheen only towards grazing
+//! lights), so a lobe estimated near 0 can still be bright in places, and a one-sample
+//! estimator divides by the probability of the lobe it drew: fireflies. The probabilities
+//! are therefore floored as the metallic-roughness sampler's: each estimated weight w_i / sum
+//! below [`LOBE_PROBABILITY_MIN`] = 1/16 is raised to it unless w_i = 0 (the lobe is absent
+//! or contributes nothing at this view), then all are renormalized, so every live lobe has
+//! at least 1/16 / (1 + 3/16) = 1/19 and its sample weight is at most 19 times its value
+//! over its own density. The coat is sampled by GGX visible normals in the
 //! coat normal's frame, the base specular by anisotropic GGX visible normals in the rotated
 //! tangent frame, sheen and diffuse by the cosine hemisphere (the sheen lobe is broad). The
 //! pdf is the mixture's.
 //!
 //! Sources: The Khronos Group, "KHR_materials_sheen", "KHR_materials_clearcoat",
-//! "KHR_materials_anisotropy", "KHR_materials_specular", "KHR_materials_ior" (ratified),
-//! their "Implementation" sections; glTF 2.0 Appendix B; Kulla and Conty 2017, "Revisiting
+//! "KHR_materials_anisotropy", "KHR_materials_specular", "KHR_materials_ior",
+//! "KHR_materials_iridescence" (ratified), their "Implementation" sections; the Khronos
+//! glTF-Sample-Viewer's `pbr.frag`; Belcour and Barla 2017, "A Practical Extension to
+//! Microfacet Theory for the Modeling of Varying Iridescence"; glTF 2.0 Appendix B; Kulla and Conty 2017, "Revisiting
 //! Physically Based Shading at Imageworks"; Heitz 2018, "Sampling the GGX Distribution of
 //! Visible Normals".
 
@@ -84,8 +120,13 @@ use crate::error::{ParamError, require};
 use crate::frame::Frame;
 use crate::ggx::{self, Ggx};
 use crate::ibl::energy::{fresnel_avg_schlick, kulla_conty_ggx, kulla_conty_ggx_rgb};
+#[cfg(feature = "iridescence")]
+use crate::iridescence::{self, ThinFilm};
 use crate::layers::{anisotropy, clearcoat, sheen};
-use crate::material::{MetallicRoughness, SCHLICK_WEIGHT_AVERAGE, fresnel_and_kd, schlick_weights};
+use crate::material::{
+    Film, LOBE_PROBABILITY_MIN, MetallicRoughness, SCHLICK_WEIGHT_AVERAGE, fresnel_and_kd_film,
+    schlick_weights,
+};
 use crate::microfacet::alpha_from_perceptual;
 use crate::real::Real;
 use crate::sampling;
@@ -127,7 +168,14 @@ pub struct Layered<T> {
     transmission: T,
     #[cfg(feature = "transmission")]
     thickness: T,
+    /// KHR_materials_iridescence: the factor and the film; `None` costs nothing per eval.
+    #[cfg(feature = "iridescence")]
+    iridescence: Option<(T, ThinFilm<T>)>,
 }
+
+/// mu* = 1 - 21^(-1/5): the cosine where Schlick's weight (1 - mu)^5 equals its
+/// hemispherical average 1/21 ([`SCHLICK_WEIGHT_AVERAGE`]).
+const AVERAGE_COS: f64 = 0.456_053_557_111_121_5;
 
 /// Largest |length - 1| accepted for the coat normal: a shader's `normalize` in f16 is
 /// within 1e-3.
@@ -160,6 +208,8 @@ impl<T: Real> Layered<T> {
             transmission: T::ZERO,
             #[cfg(feature = "transmission")]
             thickness: T::ZERO,
+            #[cfg(feature = "iridescence")]
+            iridescence: None,
         }
     }
 
@@ -205,6 +255,22 @@ impl<T: Real> Layered<T> {
         })
     }
 
+    /// [`with_clearcoat_normal`](Self::with_clearcoat_normal) from world space: the coat's
+    /// world-space unit normal `n` (glTF's `clearcoatNormalTexture` decoded through the
+    /// mesh's TBN, as the base's normal map) taken into the local frame of the shading point
+    /// `sp`, the same frame [`eval_world`](Self::eval_world) uses; equal to
+    /// `self.with_clearcoat_normal(sp.local(n))`, with its checks: finite, unit length within
+    /// 1e-3 and on the outer side of the shading normal (n . N > 0), else [`ParamError`]
+    /// (`"clearcoat_normal"`). The material then holds the coat normal of this shading point:
+    /// evaluate it with the same `sp`.
+    pub fn with_clearcoat_normal_world(
+        self,
+        sp: &ShadingPoint<T>,
+        n: V3<T>,
+    ) -> Result<Self, ParamError> {
+        self.with_clearcoat_normal(sp.local(n))
+    }
+
     /// KHR_materials_anisotropy: `strength` in [0, 1] (`"anisotropy_strength"`) and the
     /// direction's `rotation` in radians from the tangent +x, finite (`"anisotropy_rotation"`),
     /// else [`ParamError`].
@@ -216,6 +282,35 @@ impl<T: Real> Layered<T> {
             strength,
             aniso_cos: d.x,
             aniso_sin: d.y,
+            ..self
+        })
+    }
+
+    /// KHR_materials_iridescence: the iridescence `factor` in [0, 1] (`"iridescence"`, else
+    /// [`ParamError`]) and the thin film (thickness in nanometres and index, validated by
+    /// [`ThinFilm::new`]; glTF's defaults are 400 nm, the `iridescenceThicknessMaximum`, and
+    /// 1.3). Each lobe's Fresnel is mixed towards the film's by the factor (module docs,
+    /// "Iridescence"). Factor 0, and thickness 0 (the Sample Viewer's rule), are the material
+    /// without it, bit for bit.
+    ///
+    /// ```
+    /// use brdf::V3;
+    /// use brdf::iridescence::ThinFilm;
+    /// use brdf::layers::layered::Layered;
+    ///
+    /// let plain = Layered::new(V3::new(0.9, 0.6, 0.3), 1.0, 0.3)?;
+    /// let tinted = plain.with_iridescence(1.0, ThinFilm::new(400.0, 1.3)?)?;
+    /// let (wo, wi) = (V3::new(0.0, 0.6, 0.8), V3::new(0.0, -0.6, 0.8));
+    /// assert_ne!(tinted.eval(wo, wi), plain.eval(wo, wi));
+    /// let off = plain.with_iridescence(0.0, ThinFilm::new(400.0, 1.3)?)?;
+    /// assert_eq!(off.eval(wo, wi), plain.eval(wo, wi));
+    /// # Ok::<(), brdf::ParamError>(())
+    /// ```
+    #[cfg(feature = "iridescence")]
+    pub fn with_iridescence(self, factor: T, film: ThinFilm<T>) -> Result<Self, ParamError> {
+        require::<T>(in_unit(factor), "iridescence", "in [0, 1]")?;
+        Ok(Self {
+            iridescence: Some((factor, film)),
             ..self
         })
     }
@@ -299,6 +394,65 @@ impl<T: Real> Layered<T> {
         -(wo + wi * eta).normalize_or(-V3::unit_z())
     }
 
+    /// The film's factor (0 where the film's thickness is 0) and its RGB reflectance at
+    /// `cos_theta` over the dielectric base and over the metal base ([`film_rgb`]).
+    #[inline]
+    fn film(&self, cos_theta: T) -> Option<Film<T>> {
+        #[cfg(feature = "iridescence")]
+        {
+            let b = &self.base;
+            self.iridescence.map(|(factor, film)| {
+                let off = film.thickness().simd_eq(T::ZERO);
+                (
+                    T::select(off, T::ZERO, factor),
+                    film_rgb(&film, b.dielectric_f0(), cos_theta),
+                    film_rgb(&film, b.base_color(), cos_theta),
+                )
+            })
+        }
+        #[cfg(not(feature = "iridescence"))]
+        {
+            let _ = cos_theta;
+            None
+        }
+    }
+
+    /// The base's mixed Fresnel F and diffuse weight kd for the Schlick weights of
+    /// `cos_theta`, with the film's Fresnel mixed in ([`fresnel_and_kd_film`]).
+    #[inline]
+    fn fresnel_kd(&self, cos_theta: T) -> (V3<T>, V3<T>) {
+        self.fresnel_kd_weights(schlick_weights(cos_theta), cos_theta)
+    }
+
+    /// [`Self::fresnel_kd`] with the Schlick weights given (the film read at `cos_theta`).
+    #[inline]
+    fn fresnel_kd_weights(&self, weights: (T, T), cos_theta: T) -> (V3<T>, V3<T>) {
+        let b = &self.base;
+        fresnel_and_kd_film(
+            weights,
+            b.base_color(),
+            b.metallic(),
+            b.dielectric_f0(),
+            b.dielectric_f90(),
+            b.coupling(),
+            self.film(cos_theta),
+        )
+    }
+
+    /// F and kd at the hemispherical average: Schlick weight 1/21, the film read at the angle
+    /// mu* = 1 - 21^(-1/5) = 0.456 where Schlick's weight takes that value (a one-point
+    /// reading of the film's average, exact for Schlick's F).
+    #[inline]
+    fn fresnel_kd_average(&self) -> (V3<T>, V3<T>) {
+        self.fresnel_kd_weights(
+            (
+                T::splat(SCHLICK_WEIGHT_AVERAGE),
+                T::splat(1.0 - SCHLICK_WEIGHT_AVERAGE),
+            ),
+            T::splat(AVERAGE_COS),
+        )
+    }
+
     /// The same material with the per-lobe multiple-scattering compensation on or off
     /// (module docs). Off by default, as in the extensions.
     #[must_use]
@@ -373,14 +527,7 @@ impl<T: Real> Layered<T> {
             v_dot_h,
         };
         let b = &self.base;
-        let (f, kd) = fresnel_and_kd(
-            schlick_weights(v_dot_h),
-            b.base_color(),
-            b.metallic(),
-            b.dielectric_f0(),
-            b.dielectric_f90(),
-            b.coupling(),
-        );
+        let (f, kd) = self.fresnel_kd(v_dot_h);
         // D V: the isotropic kernels where strength is 0 (so the base is bit for bit the
         // metallic-roughness material's), the anisotropic GGX elsewhere.
         let alpha = b.alpha();
@@ -407,6 +554,16 @@ impl<T: Real> Layered<T> {
                 fresnel_avg_schlick(base.y, T::ONE),
                 fresnel_avg_schlick(base.z, T::ONE),
             );
+            // The film's averages read at mu* (as in `fresnel_kd_average`), mixed per lobe.
+            let (favg_d, favg_m) = match self.film(T::splat(AVERAGE_COS)) {
+                Some((factor, film_d, film_m)) => {
+                    let off = factor.simd_eq(T::ZERO);
+                    let mix =
+                        |a: V3<T>, b: V3<T>| V3::select(off, a, a * (T::ONE - factor) + b * factor);
+                    (mix(favg_d, film_d), mix(favg_m, film_m))
+                }
+                None => (favg_d, favg_m),
+            };
             let ms_d = kulla_conty_ggx_rgb(wo.z, wi.z, a_eff, favg_d);
             let ms_m = kulla_conty_ggx_rgb(wo.z, wi.z, a_eff, favg_m);
             spec_ms = ms_d * (T::ONE - m) + ms_m * m;
@@ -466,14 +623,7 @@ impl<T: Real> Layered<T> {
         let t = self.transmission;
         let b = &self.base;
         let (btdf, h_t) = self.btdf_and_half(wo, wi);
-        let (_, kd) = fresnel_and_kd(
-            schlick_weights(wo.dot(h_t).clamp(T::ZERO, T::ONE)),
-            b.base_color(),
-            b.metallic(),
-            b.dielectric_f0(),
-            b.dielectric_f90(),
-            b.coupling(),
-        );
+        let (_, kd) = self.fresnel_kd(wo.dot(h_t).clamp(T::ZERO, T::ONE));
         let m = self.sheen_max();
         let through = (T::ONE - self.clearcoat * f_coat) * (T::ONE - m * e_v) * t * btdf;
         let live = t.simd_gt(T::ZERO) & wo.z.simd_gt(T::ZERO) & wi.z.simd_lt(T::ZERO);
@@ -497,7 +647,10 @@ impl<T: Real> Layered<T> {
 
     /// The lobe-selection probabilities at wo: (coat, base specular, cosine lobes), summing
     /// to 1 without transmission; with it, the transmission lobe takes the rest, 1 minus
-    /// their sum (module docs, "Sampling"). NaN where a component of wo is NaN or infinite.
+    /// their sum (module docs, "Sampling"). Each lobe whose estimated albedo at wo is
+    /// positive has at least 1/19 (the floor [`LOBE_PROBABILITY_MIN`] = 1/16 after
+    /// renormalization over at most four lobes: 1/16 / (1 + 3/16)); a lobe of estimate 0
+    /// has 0. NaN where a component of wo is NaN or infinite.
     #[must_use]
     pub fn lobe_probabilities(&self, wo: V3<T>) -> V3<T> {
         self.lobe_weights(wo).0
@@ -509,25 +662,8 @@ impl<T: Real> Layered<T> {
     fn lobe_weights(&self, wo: V3<T>) -> (V3<T>, T) {
         let b = &self.base;
         let mean = |c: V3<T>| (c.x + c.y + c.z) * T::splat(1.0 / 3.0);
-        let (f, _) = fresnel_and_kd(
-            schlick_weights(wo.z),
-            b.base_color(),
-            b.metallic(),
-            b.dielectric_f0(),
-            b.dielectric_f90(),
-            b.coupling(),
-        );
-        let (_, kd) = fresnel_and_kd(
-            (
-                T::splat(SCHLICK_WEIGHT_AVERAGE),
-                T::splat(1.0 - SCHLICK_WEIGHT_AVERAGE),
-            ),
-            b.base_color(),
-            b.metallic(),
-            b.dielectric_f0(),
-            b.dielectric_f90(),
-            b.coupling(),
-        );
+        let (f, _) = self.fresnel_kd(wo.z);
+        let (_, kd) = self.fresnel_kd_average();
         let w_coat = self.clearcoat * clearcoat::fresnel(self.coat_normal.dot(wo));
         let through = T::ONE - w_coat;
         let m = self.sheen_max();
@@ -548,12 +684,21 @@ impl<T: Real> Layered<T> {
         // Nothing reflects (a black, non-specular base without layers): any lobe will do.
         let empty = sum.simd_le(T::ZERO);
         let safe = T::select(empty, T::ONE, sum);
+        // The floor (module docs, "Sampling"): each lobe of positive weight gets at least
+        // LOBE_PROBABILITY_MIN of the estimate, a lobe of weight 0 (absent, or dark at this
+        // view) keeps 0, then all are renormalized.
+        let lo = T::splat(LOBE_PROBABILITY_MIN);
+        let floor = |w: T| T::select(w.simd_gt(T::ZERO), (w / safe).max(lo), T::ZERO);
+        let (f_coat, f_spec, f_cos, f_trans) =
+            (floor(w_coat), floor(w_spec), floor(w_cos), floor(w_trans));
+        let total = f_coat + f_spec + f_cos + f_trans;
+        let total = T::select(empty, T::ONE, total);
         let p = V3::new(
-            T::select(empty, T::ZERO, w_coat / safe),
-            T::select(empty, T::ZERO, w_spec / safe),
-            T::select(empty, T::ONE, w_cos / safe),
+            T::select(empty, T::ZERO, f_coat / total),
+            T::select(empty, T::ZERO, f_spec / total),
+            T::select(empty, T::ONE, f_cos / total),
         );
-        let p_trans = T::select(empty, T::ZERO, w_trans / safe);
+        let p_trans = T::select(empty, T::ZERO, f_trans / total);
         let bad = any_nonfinite3(wo);
         (
             V3::new(
@@ -787,4 +932,36 @@ impl<T: Real> Prepared<T> {
         self.material
             .eval_with(self.wo, wi, self.e_v, self.e_v, self.f_coat)
     }
+}
+
+/// The film's reflectance in linear Rec.709 RGB over a base given by its per-channel F0
+/// (KHR_materials_iridescence, "Iridescence Fresnel"): each channel's base index from its F0
+/// as the extension's `Fresnel0ToIor`, n = (1 + sqrt(F0)) / (1 - sqrt(F0)) with no
+/// extinction (for metals too, the base colour read as F0), under air (outside index 1, as
+/// the Sample Viewer), the film's XYZ reflectance by [`iridescence::dielectric`] converted
+/// with [`iridescence::XYZ_TO_REC709`] and divided per channel by the conversion of the
+/// equal-energy white (1, 1, 1) (row sums 1.205, 0.948, 0.909), so that a spectrally flat
+/// reflectance R, the limit of a vanishing film, is (R, R, R): the Sample Viewer reaches the
+/// same flat limit by adding the film's flat term unconverted. Each channel clamped to
+/// [0, 1] (out-of-gamut colours). F0 = 1 gives an index capped at MAX (the film's base ratio
+/// is capped, its F within 4e-6 of 1).
+#[cfg(feature = "iridescence")]
+#[inline]
+fn film_rgb<T: Real>(film: &ThinFilm<T>, f0: V3<T>, cos_theta: T) -> V3<T> {
+    let channel = |f0: T, row: [f64; 3]| {
+        let r = f0.saturate().sqrt_nonneg();
+        let ior = ((T::ONE + r) / (T::ONE - r).max(T::MIN_POSITIVE)).min(T::MAX);
+        let xyz = iridescence::dielectric(film, T::ONE, ior, cos_theta);
+        let white = row[0] + row[1] + row[2];
+        let rgb = T::splat(row[0] / white) * xyz.x
+            + T::splat(row[1] / white) * xyz.y
+            + T::splat(row[2] / white) * xyz.z;
+        rgb.saturate()
+    };
+    let m = iridescence::XYZ_TO_REC709;
+    V3::new(
+        channel(f0.x, m[0]),
+        channel(f0.y, m[1]),
+        channel(f0.z, m[2]),
+    )
 }

@@ -245,7 +245,18 @@ fn layered_rows<T: Real>(t: &mut Vec<Kernel<T>>) {
         .and_then(|m| m.with_anisotropy(s(0.7), s(0.4)))
         .unwrap()
         .with_compensation(true);
-    for (label, m) in [("plain", plain), ("all layers", all)] {
+    #[allow(unused_mut)]
+    let mut variants = vec![("plain", plain), ("all layers", all)];
+    #[cfg(feature = "iridescence")]
+    variants.push((
+        "iridescent",
+        all.with_iridescence(
+            s(0.9),
+            brdf::iridescence::ThinFilm::new(s(400.0), s(1.3)).unwrap(),
+        )
+        .unwrap(),
+    ));
+    for (label, m) in variants {
         let dirs = || [v("wo", WO), v("wi", WI)].concat();
         t.push(k(
             &format!("Layered::eval({label})"),
@@ -3157,6 +3168,11 @@ const NOT_KERNELS: &[(&str, &str)] = &[
     ("Layered::with_transmission", "validating constructor"),
     ("Layered::with_volume", "constructor"),
     ("Layered::with_compensation", "constructor"),
+    ("Layered::with_iridescence", "validating constructor"),
+    (
+        "Layered::with_clearcoat_normal_world",
+        "validating constructor",
+    ),
     ("Transmission::factor", "getter"),
     ("Volume::thickness", "getter"),
     ("ThinFilm::thickness", "getter"),

@@ -333,3 +333,98 @@ fn world_space_equals_local_space_in_the_tangent_frame() {
     let (wi, q) = m.sample(sp.wo(), 0.4, 0.7);
     assert_eq!((lw, p), (sp.world(wi), q));
 }
+
+/// The coat normal from world space is the local one in the shading point's frame: the
+/// material built from the world-space normal evaluates as the one built from
+/// `sp.local(n)`, bit for bit, in eval, pdf and sample; a world normal below the shading
+/// normal's horizon is refused.
+#[test]
+fn world_space_coat_normal_equals_the_local_one() {
+    use brdf::ShadingPoint;
+    use brdf::frame::Frame;
+    let m = Layered::new(V3::new(0.7, 0.5, 0.2), 0.3, 0.4)
+        .and_then(|m| m.with_clearcoat(0.8, 0.3))
+        .unwrap();
+    let n = V3::new(0.0, 0.6, 0.8);
+    let t = V3::new(0.8, 0.48, -0.36);
+    let frame = Frame::from_axes(t, n.cross(t), n);
+    let sp = ShadingPoint::from_frame(frame, V3::new(0.3, 0.5, 0.812_403_840_463_596));
+    // The coat normal tilted from n towards +x (world).
+    let nc = common::normalize(n + V3::new(0.3, 0.0, 0.0));
+    let world = m.with_clearcoat_normal_world(&sp, nc).unwrap();
+    let local = m.with_clearcoat_normal(sp.local(nc)).unwrap();
+    assert_ne!(local, m, "the tilted normal changes the material");
+    let mut rng = Rng(21);
+    for _ in 0..50 {
+        let l = random_dir(&mut rng);
+        let l = frame.to_world(l);
+        assert_eq!(world.eval_world(&sp, l), local.eval_world(&sp, l));
+        assert_eq!(world.pdf_world(&sp, l), local.pdf_world(&sp, l));
+        let (u1, u2) = (rng.next_f64(), rng.next_f64());
+        assert_eq!(
+            world.sample_world(&sp, u1, u2),
+            local.sample_world(&sp, u1, u2)
+        );
+    }
+    // A smooth coat over a rough base peaks at the view mirrored about its world normal,
+    // not about the shading normal: the coat normal really is nc in world space.
+    let sharp = Layered::new(V3::new(0.7, 0.5, 0.2), 0.0, 0.9)
+        .and_then(|m| m.with_clearcoat(1.0, 0.1))
+        .and_then(|m| m.with_clearcoat_normal_world(&sp, nc))
+        .unwrap();
+    let v = sp.world(sp.wo());
+    let mirror = |about: V3<f64>| about * (2.0 * v.dot(about)) - v;
+    let (at_coat, at_shading) = (
+        sharp.eval_world(&sp, mirror(nc)).x,
+        sharp.eval_world(&sp, mirror(n)).x,
+    );
+    assert!(at_coat > 10.0 * at_shading, "{at_coat} vs {at_shading}");
+    // Below the shading normal's horizon: refused.
+    assert!(m.with_clearcoat_normal_world(&sp, -n).is_err());
+}
+
+/// The lobe-selection floor (module docs, "Sampling"): a nearly black diffuse under a coat
+/// has an estimated share of 0.022 at normal view, below the floor, and is drawn with at
+/// least 1/19; absent lobes keep probability 0; the floored sampler still matches its pdf.
+#[test]
+fn lobe_probability_floor_is_respected() {
+    let dark = Layered::new(V3::splat(0.002), 0.0, 0.5)
+        .and_then(|m| m.with_clearcoat(1.0, 0.3))
+        .unwrap();
+    // The unfloored estimate at n.v = 1 by the documented weights: coat F_coat(1) = 0.04,
+    // specular (1 - 0.04) 0.04, diffuse (1 - 0.04) kd(1/21) 0.002 with
+    // kd = 1 - (0.04 + 0.96 / 21).
+    let kd = 1.0 - (0.04 + 0.96 / 21.0);
+    let w = [0.04, 0.96 * 0.04, 0.96 * kd * 0.002];
+    let unfloored = w[2] / (w[0] + w[1] + w[2]);
+    let floor = (1.0 / 16.0) / (1.0 + 3.0 / 16.0);
+    assert!(
+        unfloored < 0.5 * floor,
+        "{unfloored}: the case must need the floor"
+    );
+    for theta in [0.0, 40.0, 75.0] {
+        let p = dark.lobe_probabilities(wo_at(theta));
+        println!("dark coated, theta {theta}: P = {p:?} (unfloored diffuse {unfloored:.4} at 0)");
+        for x in [p.x, p.y, p.z] {
+            assert!(x >= floor * (1.0 - 1e-12), "theta {theta}: {p:?}");
+        }
+        assert!((p.x + p.y + p.z - 1.0).abs() < 1e-12);
+    }
+    // Lobes of weight 0 stay at 0: no coat, and a metal has no cosine lobe.
+    let metal = Layered::new(V3::splat(0.9), 1.0, 0.5).unwrap();
+    let p = metal.lobe_probabilities(wo_at(30.0));
+    assert_eq!((p.x, p.y, p.z), (0.0, 1.0, 0.0));
+    // The floored sampler against its pdf.
+    let wo = wo_at(20.0);
+    let folded = |w: V3<f64>| dark.pdf(wo, w) + dark.pdf(wo, flip(w));
+    let stat = chi_square(
+        |u1, u2| {
+            let (wi, p) = dark.sample(wo, u1, u2);
+            assert_eq!(p, dark.pdf(wo, wi));
+            let w = if wi.z < 0.0 { flip(wi) } else { wi };
+            (w.into(), folded(w))
+        },
+        |w| folded(w.into()),
+    );
+    assert_fits("floored dark coated", stat);
+}

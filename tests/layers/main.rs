@@ -12,6 +12,8 @@
 //!   reciprocity, sampler chi-square, extremes and lanes
 //! - `transmission`: KHR_materials_transmission in the layered material: zero is the material
 //!   without it, the furnace over the sphere, the sampler over the sphere, NaN on every lane
+//! - `iridescence`: KHR_materials_iridescence in the layered material: zero is the material
+//!   without it, a vanishing film is the exact Fresnel, furnace, reciprocity, sampler, lanes
 //! - `prepared`: the material prepared per shading point against the direct eval; the
 //!   view-only albedo scaling against the min form
 
@@ -20,6 +22,8 @@ mod common;
 
 mod anisotropy;
 mod clearcoat;
+#[cfg(feature = "iridescence")]
+mod iridescence;
 mod layered;
 mod prepared;
 mod sheen;
