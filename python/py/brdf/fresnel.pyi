@@ -61,6 +61,10 @@ def dielectric(cos_theta_i: npt.ArrayLike, eta: npt.ArrayLike, *, dtype: npt.DTy
     """Exact unpolarized dielectric Fresnel reflectance, Born and Wolf 1.5.2."""
     ...
 
+def dielectric_fast(cos_theta_i: npt.ArrayLike, eta: npt.ArrayLike, *, dtype: npt.DTypeLike = None, lanes: bool = True, threads: bool = True, check: bool = False) -> Any:
+    """Dielectric Fresnel in working precision, Born and Wolf 1.5.2."""
+    ...
+
 def conductor(cos_theta_i: npt.ArrayLike, eta: npt.ArrayLike, k: npt.ArrayLike, *, dtype: npt.DTypeLike = None, lanes: bool = True, threads: bool = True, check: bool = False) -> Any:
     """Exact unpolarized conductor Fresnel reflectance of eta + i k, Born and Wolf 14.2."""
     ...
