@@ -2960,6 +2960,22 @@ pub static KERNELS: &[Kernel] = &[
         dfg::narkowicz_polynomial(n_dot_v, roughness)
     ),
     kernel!(
+        "ibl::dfg::specular_filament",
+        "Split-sum specular radiance from Filament's DFG channels, prefiltered mix(x, y, F0), \
+         Guy and Agopian, Filament 5.3.4.3",
+        [prefiltered_r: Domain::NONNEG, prefiltered_g: Domain::NONNEG,
+         prefiltered_b: Domain::NONNEG,
+         f0_r: Domain::UNIT, f0_g: Domain::UNIT, f0_b: Domain::UNIT,
+         dfg_x: Domain::FINITE, dfg_y: Domain::FINITE]
+            -> [radiance_r: Domain::FINITE, radiance_g: Domain::FINITE, radiance_b: Domain::FINITE],
+        o3(dfg::specular_filament(
+            v3(prefiltered_r, prefiltered_g, prefiltered_b),
+            v3(f0_r, f0_g, f0_b),
+            dfg_x,
+            dfg_y
+        ))
+    ),
+    kernel!(
         "ibl::dfg::specular",
         "Split-sum specular radiance prefiltered (F0 A + F90 B) per channel, Karis 2013; Lagarde \
          and de Rousiers 2014",

@@ -164,6 +164,36 @@ pub fn table(
     Ok(())
 }
 
+/// Fills `out` with the DFG table in Filament's two channels, `[B, E]` per cell (B = F0's
+/// complement weight, E = A + B the albedo with F = 1; module docs, "The split sum"), the
+/// layout of Filament's `cmgen` multiple-scattering table that its shaders read as
+/// `dfg.x`, `dfg.y` and combine with [`specular_filament`] (Filament's `specularDFG`,
+/// mix(dfg.x, dfg.y, F0), and its energy compensation 1 + F0 (1 / dfg.y - 1); Romain
+/// Guy and Mathias Agopian, "Physically Based Rendering in Filament", sections 5.3.4.3 and
+/// 4.7.2). Same cells, order and errors as [`table`], whose B and E it holds bit for bit.
+pub fn table_filament(
+    out: &mut [[f32; 2]],
+    n_nov: usize,
+    n_roughness: usize,
+    samples: u32,
+) -> Result<(), ParamError> {
+    check_dims(out.len(), n_nov, n_roughness)?;
+    if samples == 0 {
+        return Err(ParamError {
+            param: "samples",
+            expected: ">= 1",
+        });
+    }
+    for (idx, cell) in out.iter_mut().enumerate() {
+        let (i, j) = (idx % n_nov, idx / n_nov);
+        let n_dot_v = (i as f64 + 0.5) / n_nov as f64;
+        let r = (j as f64 + 0.5) / n_roughness as f64;
+        let t = dfg(n_dot_v, r * r, samples);
+        *cell = [t[1] as f32, t[2] as f32];
+    }
+    Ok(())
+}
+
 /// Bilinear interpolation of a [`table`] at (`n_dot_v`, perceptual `roughness`), as a texture
 /// sampler with linear filtering and clamp-to-edge addressing reads it: coordinates
 /// x = NoV n_nov - 0.5 and y = r n_roughness - 0.5, clamped to the edge cells' centres.
@@ -392,6 +422,31 @@ pub fn specular<T: Real>(prefiltered: V3<T>, f0: V3<T>, f90: T, a: T, b: T) -> V
     let ok = f90_ok & a.is_finite() & b.is_finite();
     prefiltered.zip_map(f0, |l, f| {
         let v = cap(l * cap(f.mul_add(a, fb)));
+        nan_unless(
+            ok & in_unit(f) & l.simd_ge(T::ZERO) & l.simd_lt(T::INFINITY),
+            v,
+        )
+    })
+}
+
+/// The split-sum specular radiance from Filament's two DFG channels ([`table_filament`]:
+/// x = B, y = E = A + B): prefiltered mix(x, y, F0) = prefiltered (x + F0 (y - x)) per
+/// channel, which is prefiltered (F0 A + B), [`specular`] with F90 = 1 (Filament's
+/// `specularDFG` in `light_indirect.fs`; Guy and Agopian, "Physically Based Rendering in
+/// Filament", section 5.3.4.3).
+///
+/// Domain: prefiltered >= 0 and finite; f0 components in [0, 1]; x, y finite. A negative or
+/// infinite radiance or f0 outside [0, 1] give NaN in its channel; NaN or an infinite x or y
+/// give NaN in every channel; the mix and the result are clamped to [-MAX, MAX], so finite
+/// input gives finite output.
+#[inline]
+#[must_use]
+pub fn specular_filament<T: Real>(prefiltered: V3<T>, f0: V3<T>, dfg_x: T, dfg_y: T) -> V3<T> {
+    let cap = |v: T| v.clamp(-T::MAX, T::MAX);
+    let diff = cap(dfg_y - dfg_x);
+    let ok = dfg_x.is_finite() & dfg_y.is_finite();
+    prefiltered.zip_map(f0, |l, f| {
+        let v = cap(l * cap(f.mul_add(diff, dfg_x)));
         nan_unless(
             ok & in_unit(f) & l.simd_ge(T::ZERO) & l.simd_lt(T::INFINITY),
             v,

@@ -5,6 +5,7 @@
 //!
 //! - `dfg_accuracy`: the DFG table against the exact split-sum integrals
 //! - `dfg_approximations`: the analytic DFG fits against the table
+//! - `dfg_filament`: Filament's two-channel DFG table and its mix
 //! - `dfg_nan`: bad input of the DFG kernels
 //! - `energy_conservation`: compensated GGX never gains energy
 //! - `energy_furnace`: white furnace of the compensated GGX
@@ -29,6 +30,7 @@ mod common;
 
 mod dfg_accuracy;
 mod dfg_approximations;
+mod dfg_filament;
 mod dfg_nan;
 mod energy_conservation;
 mod energy_furnace;

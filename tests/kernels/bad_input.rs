@@ -612,6 +612,24 @@ fn ibl_rows<T: Real>(t: &mut Vec<Kernel<T>>) {
         .dep("f0.y", &[1])
         .dep("f0.z", &[2]),
     );
+    t.push(
+        k(
+            "ibl::dfg::specular_filament",
+            vec![
+                rgb("prefiltered", [0.5, 1.0, 2.0], &[-1.0, -INF]),
+                rgb("f0", [0.04, 0.5, 0.9], &UNIT_BAD),
+                c("dfg_x", 0.1),
+                c("dfg_y", 0.9),
+            ],
+            |x| o3(dfg::specular_filament(v3(x, 0), v3(x, 3), x[6], x[7])),
+        )
+        .dep("prefiltered.x", &[0])
+        .dep("prefiltered.y", &[1])
+        .dep("prefiltered.z", &[2])
+        .dep("f0.x", &[0])
+        .dep("f0.y", &[1])
+        .dep("f0.z", &[2]),
+    );
     type Map2<T> = fn(T, T) -> T;
     let maps: [(&str, Map2<T>, Vec<Vec<Arg>>); 6] = [
         (
@@ -3011,6 +3029,10 @@ const NOT_KERNELS: &[(&str, &str)] = &[
     ),
     ("ibl::dfg::dfg", "f64 quadrature of one table entry"),
     ("ibl::dfg::table", "table builder into a caller's buffer"),
+    (
+        "ibl::dfg::table_filament",
+        "table builder into a caller's buffer",
+    ),
     (
         "ibl::dfg::lookup",
         "table lookup (its inputs are clamped texture coordinates)",

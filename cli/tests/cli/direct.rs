@@ -737,6 +737,9 @@ pub fn direct<T: Scalar>(path: &str, a: &[T]) -> Option<Vec<T>> {
         "ibl::dfg::lazarov" => dfg::lazarov(a[0], a[1]).to_vec(),
         "ibl::dfg::narkowicz_lazarov" => dfg::narkowicz_lazarov(a[0], a[1]).to_vec(),
         "ibl::dfg::narkowicz_polynomial" => dfg::narkowicz_polynomial(a[0], a[1]).to_vec(),
+        "ibl::dfg::specular_filament" => {
+            three(dfg::specular_filament(v(a, 0), v(a, 3), a[6], a[7]))
+        }
         "ibl::dfg::specular" => three(dfg::specular(v(a, 0), v(a, 3), a[6], a[7], a[8])),
         "ibl::dfg::mip_from_roughness_linear" => vec![dfg::mip_from_roughness_linear(a[0], a[1])],
         "ibl::dfg::roughness_from_mip_linear" => vec![dfg::roughness_from_mip_linear(a[0], a[1])],

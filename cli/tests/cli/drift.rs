@@ -799,6 +799,10 @@ const EXCLUDED: &[(&str, &str)] = &[
     ),
     ("ibl::dfg::table", "writes a table into a caller's buffer"),
     (
+        "ibl::dfg::table_filament",
+        "writes a table into a caller's buffer",
+    ),
+    (
         "ibl::dfg::lookup",
         "reads a caller's table (a slice argument)",
     ),
