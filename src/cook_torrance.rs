@@ -390,7 +390,7 @@ impl crate::real::sealed::Widened<9> for ConductorLocal {
         let s = wo + wi;
         let (sxy, ss) = local_sums(s);
         let v_dot_h = (wo.dot(s) / ss.sqrt()).saturate();
-        let dv = local_dv(s.z, sxy, ss, vz, lz, a, T::MAX);
+        let dv = local_dv(s.z, sxy, ss, vz, lz, a, T::MAX, T::sqrt);
         let f = fresnel::conductor(v_dot_h, eta, k);
         let above = vz.simd_gt(T::ZERO) & lz.simd_gt(T::ZERO);
         T::select(above, dv * f, T::ZERO)
@@ -402,14 +402,21 @@ impl crate::real::sealed::Widened<9> for ConductorLocal {
         // intermediate leaves f64's normal range for f32 inputs (|s| >= 2^-149 where it is not
         // 0). The cap at f32's largest finite value keeps D V F finite after the rounding. The
         // roots of |s| and of F stay on `vsqrtpd`: they lie on the longest chain of dependent
-        // operations, where a multiply-add root (thirteen steps) would lengthen it; V's two
-        // lie beside it (`local_dv_wide`).
+        // operations, where a multiply-add root (thirteen steps) would lengthen it.
         let (wo, wi) = (V3::new(vx, vy, vz), V3::new(lx, ly, lz));
         let s = wo + wi;
         let (sxy, ss) = local_sums(s);
         let v_dot_h = (wo.dot(s) / ss.sqrt()).saturate();
         let f = fresnel::Conductor.wide([v_dot_h, eta, k]);
-        let dv = local_dv_wide(s.z, sxy, ss, vz, lz, a);
+        // V's two roots lie beside that chain: by multiply-adds they leave the divider to it
+        // (`crate::widen::sqrt`, within 3.3e-11 relative, from below; its argument
+        // alpha^2 (1 - c^2) + c^2 lies in [1e-8, 1e8] for the clamped alpha). On `vsqrtpd`
+        // (about seventeen multiply-adds of throughput each on a Zen 4 core) they would
+        // queue with the three roots and three divisions of |s|, F and D V: the rough
+        // conductor took 7.3 ms per 10^6 `f32x8` elements with them, 6.2 ms without
+        // (`bench/mitsuba/compare.py`).
+        let cap = W::splat(f64::from(f32::MAX));
+        let dv = local_dv(s.z, sxy, ss, vz, lz, a, cap, crate::widen::sqrt);
         let above = vz.simd_gt(W::ZERO) & lz.simd_gt(W::ZERO);
         W::select(above, dv * f, W::ZERO)
     }
@@ -431,35 +438,25 @@ fn local_sums<T: Real>(s: V3<T>) -> (T, T) {
 /// that close to the horizon, where the result is finite but not accurate).
 #[cfg(feature = "ggx")]
 #[inline]
-fn local_dv<T: Real>(sz: T, sxy: T, ss: T, n_dot_v: T, n_dot_l: T, a: T, cap: T) -> T {
+#[allow(clippy::too_many_arguments)] // the kernel's own locals, named as in its docs
+fn local_dv<T: Real>(
+    sz: T,
+    sxy: T,
+    ss: T,
+    n_dot_v: T,
+    n_dot_l: T,
+    a: T,
+    cap: T,
+    sqrt: impl Fn(T) -> T,
+) -> T {
     let a2 = a * a;
     let t = a2.mul_add(sz * sz, sxy);
-    let root = |c: T| a2.mul_add(crate::microfacet::sin2_working(c), c * c).sqrt();
+    let root = |c: T| sqrt(a2.mul_add(crate::microfacet::sin2_working(c), c * c));
     let (cv, cl) = (n_dot_v.saturate(), n_dot_l.saturate());
     let den = cl.mul_add(root(cv), cv * root(cl));
     ((a2 * T::splat(0.5 * core::f64::consts::FRAC_1_PI)) * (ss * ss)
         / ((t * t) * den).max(T::MIN_POSITIVE))
     .min(cap)
-}
-
-/// [`local_dv`] in f64 for f32 inputs, capped at f32's largest finite value, with V's two
-/// roots by [`crate::widen::sqrt`] (within 3.3e-11 relative, from below; its argument
-/// alpha^2 (1 - c^2) + c^2 lies in [1e-8, 1e8] for the clamped alpha, a normal number). On
-/// `vsqrtpd` they would queue with F's two roots, |s|'s and three divisions for the one
-/// divider unit (each `vsqrtpd` on four lanes costs about seventeen multiply-adds of
-/// throughput on a Zen 4 core): by multiply-adds the rough conductor takes 6.2 ms instead of
-/// 7.3 per 10^6 `f32x8` elements (`bench/mitsuba/compare.py`).
-#[cfg(feature = "ggx")]
-#[inline]
-fn local_dv_wide<W: Real<Scalar = f64>>(sz: W, sxy: W, ss: W, n_dot_v: W, n_dot_l: W, a: W) -> W {
-    let a2 = a * a;
-    let t = a2.mul_add(sz * sz, sxy);
-    let root = |c: W| crate::widen::sqrt(a2.mul_add(crate::microfacet::sin2_working(c), c * c));
-    let (cv, cl) = (n_dot_v.saturate(), n_dot_l.saturate());
-    let den = cl.mul_add(root(cv), cv * root(cl));
-    ((a2 * W::splat(0.5 * core::f64::consts::FRAC_1_PI)) * (ss * ss)
-        / ((t * t) * den).max(W::MIN_POSITIVE))
-    .min(W::splat(f64::from(f32::MAX)))
 }
 
 /// The working-precision tier of [`ggx_conductor_local`]: the same rough conductor, domain,
@@ -490,7 +487,7 @@ pub fn ggx_conductor_local_fast<T: Real>(wo: V3<T>, wi: V3<T>, alpha: Alpha<T>, 
     let (sxy, ss) = local_sums(s);
     let v_dot_h = (wo.dot(s) / ss.sqrt()).saturate();
     let f = fresnel::conductor_fast(v_dot_h, eta, k);
-    let dv = local_dv(s.z, sxy, ss, wo.z, wi.z, a, T::MAX);
+    let dv = local_dv(s.z, sxy, ss, wo.z, wi.z, a, T::MAX, T::sqrt);
     let above = wo.z.simd_gt(T::ZERO) & wi.z.simd_gt(T::ZERO);
     // F <= 1: the product stays finite.
     let value = T::select(above, dv * f, T::ZERO);

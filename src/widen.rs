@@ -125,7 +125,7 @@ pub(crate) fn exp_neg_split_k<W: Real<Scalar = f64>>(x: W, k: W) -> (W, W) {
     )
 }
 
-/// sqrt(x) on f64 lanes for x a positive normal number or 0, within 3.3e-11 relative (0 for
+/// sqrt(x) for x a positive normal number or 0: on f64 types within 3.3e-11 relative (0 for
 /// 0; the error is one-sided, the result below the root), by multiplications and
 /// multiply-adds only: on x86 `vsqrtpd` and `vdivpd` share one unit, and a kernel that needs
 /// several roots per lane waits for it (`cook_torrance::ggx_conductor_local`: five roots and
@@ -134,16 +134,17 @@ pub(crate) fn exp_neg_split_k<W: Real<Scalar = f64>>(x: W, k: W) -> (W, W) {
 /// steps y (3/2 - x y^2 / 2), each taking its relative error e to 3 e^2 / 2 + e^3 / 2 (3.5e-2,
 /// 1.8e-3, 4.9e-6); then s = x y and s + (y / 2)(x - s^2), which takes the error e of s to
 /// 3 e^2 / 2 + e^3 / 2 as well, plus a few roundings of 2^-53. Thirteen operations, the same
-/// bits on every target with the same `mul_add`. Subnormal, infinite and NaN x give an
-/// unspecified value (no panic).
+/// bits on every target with the same `mul_add`. On f32 types the same steps are within 1
+/// ULP of the correctly rounded root (their roundings, 2^-24 each, dominate). Subnormal,
+/// infinite and NaN x give an unspecified value (no panic).
 #[inline]
 #[must_use]
-pub(crate) fn sqrt<W: Real<Scalar = f64>>(x: W) -> W {
-    let half_x = x * W::HALF;
-    let step = |y: W| y * (-(half_x * y)).mul_add(y, W::splat(1.5));
+pub(crate) fn sqrt<T: Real>(x: T) -> T {
+    let half_x = x * T::HALF;
+    let step = |y: T| y * (-(half_x * y)).mul_add(y, T::splat(1.5));
     let y = step(step(x.rsqrt_bits(crate::real::sealed::Token::NEW)));
     let s = x * y;
-    (y * W::HALF).mul_add((-s).mul_add(s, x), s)
+    (y * T::HALF).mul_add((-s).mul_add(s, x), s)
 }
 
 #[cfg(test)]
@@ -206,6 +207,20 @@ mod tests {
             }
         }
         assert_eq!(sqrt(0.0f64), 0.0);
+        // f32 types: within 1 ULP of the correctly rounded root, every f32 in [2^-24, 2^24) spaced by 2^-12 of a binade.
+        let mut x = libm::exp2f(-24.0);
+        while x < 16_777_216.0 {
+            let (got, want) = (sqrt(x), x.sqrt());
+            assert!(
+                got.to_bits().abs_diff(want.to_bits()) <= 1,
+                "sqrt({x:e}) = {got:e}"
+            );
+            assert_eq!(
+                sqrt(crate::wide::f32x8::splat(x)).to_array()[3].to_bits(),
+                got.to_bits()
+            );
+            x *= 1.000_17;
+        }
         // The bound is met with little to spare: the seed's 3.5 % is the worst case.
         assert!(worst > 1e-11, "{worst:e}");
     }
