@@ -337,10 +337,11 @@ pub fn ggx_conductor_rgb_fast<T: Real>(
 /// within 1 ULP of the f64 tier on the same directions (0.50 found; `cargo test
 /// --all-features --test cook_torrance local:: -- --nocapture`).
 ///
-/// Run time on `f32x8` (AVX-512 Zen 4 core, `-C target-cpu=native`): 6.2 ms per 10^6
-/// hemisphere direction pairs times n.l, 2.5 times Mitsuba 3's LLVM back end on the same
-/// pairs, whose f32 arithmetic is 21 ULP off where this is 1.5 (7.3 ms before V's roots
-/// left the divider); `bench/mitsuba/README.md`.
+/// Run time on `f32x8` (a Zen 4 core, `-C target-cpu=native`, `bench/mitsuba/compare.py
+/// --n 1000000`): 6.35 ms per 10^6 hemisphere direction pairs times n.l, 3.1 times Mitsuba
+/// 3's LLVM back end on the same pairs in the same run (2.06 ms, whose f32 arithmetic is 21
+/// ULP off where this is 1.5); 7.58 ms (3.7 times) with V's roots on `vsqrtpd`. More in
+/// `bench/mitsuba/README.md`.
 ///
 /// Sources: as [`ggx_conductor_rgb`]; the half-vector form of D as Mitsuba 3's
 /// `MicrofacetDistribution::eval` (`include/mitsuba/render/microfacet.h`).
@@ -413,7 +414,7 @@ impl crate::real::sealed::Widened<9> for ConductorLocal {
         // alpha^2 (1 - c^2) + c^2 lies in [1e-8, 1e8] for the clamped alpha). On `vsqrtpd`
         // (about seventeen multiply-adds of throughput each on a Zen 4 core) they would
         // queue with the three roots and three divisions of |s|, F and D V: the rough
-        // conductor took 7.3 ms per 10^6 `f32x8` elements with them, 6.2 ms without
+        // conductor took 7.58 ms per 10^6 `f32x8` elements with them, 6.35 ms without
         // (`bench/mitsuba/compare.py`).
         let cap = W::splat(f64::from(f32::MAX));
         let dv = local_dv(s.z, sxy, ss, vz, lz, a, cap, crate::widen::sqrt);
