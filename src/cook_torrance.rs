@@ -330,12 +330,18 @@ pub fn ggx_conductor_rgb_fast<T: Real>(
 /// roundings, and the whole is within 1e-14 relative of the generic assembly [`conductor`]
 /// with [`crate::ggx::Ggx`] (D of the normalized h in double words, V from the vectors'
 /// components) on unit directions (2.4e-15 found). On `f32` and `f32x8` the same formulas
-/// are evaluated in f64 (`f32x8` as two `f64x4` halves, lane for lane the scalar operations)
-/// and rounded to f32 once (a result below f32's smallest normal from normal numbers, as
-/// [`fresnel::conductor`]'s): within 1 ULP of the f64 tier on the same directions (0.50
-/// found; `cargo test --test cook_torrance local:: -- --nocapture`).
+/// are evaluated in f64 (`f32x8` as two `f64x4` halves, lane for lane the scalar operations),
+/// V's two square roots by multiply-adds from a bit-pattern seed (within 3.3e-11 relative
+/// each; the other three roots and the divisions by the hardware), and rounded to f32 once
+/// (a result below f32's smallest normal from normal numbers, as [`fresnel::conductor`]'s):
+/// within 1 ULP of the f64 tier on the same directions (0.50 found; `cargo test
+/// --all-features --test cook_torrance local:: -- --nocapture`).
 ///
-/// Run time on `f32x8`: `bench/mitsuba/README.md`.
+/// Run time on `f32x8` (a Zen 4 core, `-C target-cpu=native`, `bench/mitsuba/compare.py
+/// --n 1000000`): 6.35 ms per 10^6 hemisphere direction pairs times n.l, 3.1 times Mitsuba
+/// 3's LLVM back end on the same pairs in the same run (2.06 ms, whose f32 arithmetic is 21
+/// ULP off where this is 1.5); 7.58 ms (3.7 times) with V's roots on `vsqrtpd`. More in
+/// `bench/mitsuba/README.md`.
 ///
 /// Sources: as [`ggx_conductor_rgb`]; the half-vector form of D as Mitsuba 3's
 /// `MicrofacetDistribution::eval` (`include/mitsuba/render/microfacet.h`).
@@ -385,7 +391,7 @@ impl crate::real::sealed::Widened<9> for ConductorLocal {
         let s = wo + wi;
         let (sxy, ss) = local_sums(s);
         let v_dot_h = (wo.dot(s) / ss.sqrt()).saturate();
-        let dv = local_dv(s.z, sxy, ss, vz, lz, a, T::MAX);
+        let dv = local_dv(s.z, sxy, ss, vz, lz, a, T::MAX, T::sqrt);
         let f = fresnel::conductor(v_dot_h, eta, k);
         let above = vz.simd_gt(T::ZERO) & lz.simd_gt(T::ZERO);
         T::select(above, dv * f, T::ZERO)
@@ -395,13 +401,23 @@ impl crate::real::sealed::Widened<9> for ConductorLocal {
     fn wide<W: Real<Scalar = f64>>(self, [vx, vy, vz, lx, ly, lz, a, eta, k]: [W; 9]) -> W {
         // Sums of two f32 components and their squares carry a rounding of 2^-53 at most; no
         // intermediate leaves f64's normal range for f32 inputs (|s| >= 2^-149 where it is not
-        // 0). The cap at f32's largest finite value keeps D V F finite after the rounding.
+        // 0). The cap at f32's largest finite value keeps D V F finite after the rounding. The
+        // roots of |s| and of F stay on `vsqrtpd`: they lie on the longest chain of dependent
+        // operations, where a multiply-add root (thirteen steps) would lengthen it.
         let (wo, wi) = (V3::new(vx, vy, vz), V3::new(lx, ly, lz));
         let s = wo + wi;
         let (sxy, ss) = local_sums(s);
         let v_dot_h = (wo.dot(s) / ss.sqrt()).saturate();
         let f = fresnel::Conductor.wide([v_dot_h, eta, k]);
-        let dv = local_dv(s.z, sxy, ss, vz, lz, a, W::splat(f64::from(f32::MAX)));
+        // V's two roots lie beside that chain: by multiply-adds they leave the divider to it
+        // (`crate::widen::sqrt`, within 3.3e-11 relative, from below; its argument
+        // alpha^2 (1 - c^2) + c^2 lies in [1e-8, 1e8] for the clamped alpha). On `vsqrtpd`
+        // (about seventeen multiply-adds of throughput each on a Zen 4 core) they would
+        // queue with the three roots and three divisions of |s|, F and D V: the rough
+        // conductor took 7.58 ms per 10^6 `f32x8` elements with them, 6.35 ms without
+        // (`bench/mitsuba/compare.py`).
+        let cap = W::splat(f64::from(f32::MAX));
+        let dv = local_dv(s.z, sxy, ss, vz, lz, a, cap, crate::widen::sqrt);
         let above = vz.simd_gt(W::ZERO) & lz.simd_gt(W::ZERO);
         W::select(above, dv * f, W::ZERO)
     }
@@ -423,10 +439,20 @@ fn local_sums<T: Real>(s: V3<T>) -> (T, T) {
 /// that close to the horizon, where the result is finite but not accurate).
 #[cfg(feature = "ggx")]
 #[inline]
-fn local_dv<T: Real>(sz: T, sxy: T, ss: T, n_dot_v: T, n_dot_l: T, a: T, cap: T) -> T {
+#[allow(clippy::too_many_arguments)] // the kernel's own locals, named as in its docs
+fn local_dv<T: Real>(
+    sz: T,
+    sxy: T,
+    ss: T,
+    n_dot_v: T,
+    n_dot_l: T,
+    a: T,
+    cap: T,
+    sqrt: impl Fn(T) -> T,
+) -> T {
     let a2 = a * a;
     let t = a2.mul_add(sz * sz, sxy);
-    let root = |c: T| a2.mul_add(crate::microfacet::sin2_working(c), c * c).sqrt();
+    let root = |c: T| sqrt(a2.mul_add(crate::microfacet::sin2_working(c), c * c));
     let (cv, cl) = (n_dot_v.saturate(), n_dot_l.saturate());
     let den = cl.mul_add(root(cv), cv * root(cl));
     ((a2 * T::splat(0.5 * core::f64::consts::FRAC_1_PI)) * (ss * ss)
@@ -462,7 +488,7 @@ pub fn ggx_conductor_local_fast<T: Real>(wo: V3<T>, wi: V3<T>, alpha: Alpha<T>, 
     let (sxy, ss) = local_sums(s);
     let v_dot_h = (wo.dot(s) / ss.sqrt()).saturate();
     let f = fresnel::conductor_fast(v_dot_h, eta, k);
-    let dv = local_dv(s.z, sxy, ss, wo.z, wi.z, a, T::MAX);
+    let dv = local_dv(s.z, sxy, ss, wo.z, wi.z, a, T::MAX, T::sqrt);
     let above = wo.z.simd_gt(T::ZERO) & wi.z.simd_gt(T::ZERO);
     // F <= 1: the product stays finite.
     let value = T::select(above, dv * f, T::ZERO);

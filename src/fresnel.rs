@@ -681,6 +681,52 @@ impl crate::real::sealed::Widened<3> for Conductor {
 
     #[inline]
     fn wide<W: Real<Scalar = f64>>(self, [c, eta, k]: [W; 3]) -> W {
+        // z = N^2 - s2 as u + c^2 or as N^2 - s2, whichever adds the smaller terms; the rest
+        // in `ConductorWide::ratio`.
+        let p = ConductorWide::new(eta, k);
+        let s2 = (W::ONE - c) * (W::ONE + c);
+        let c2 = c * c;
+        let z_re = W::select(c2.simd_le(p.n2_re), c.mul_add(c, p.u_re), p.n2_re - s2);
+        let a = z_re.abs();
+        let norm = a.mul_add(a, p.b * p.b).sqrt();
+        p.ratio(c, z_re, norm, (norm + a).sqrt())
+    }
+}
+
+/// The part of [`Conductor`]'s f64 evaluation that depends on eta and k alone (computed once
+/// in a loop with fixed parameters), and its tail from the cosine and the root s = sqrt(z),
+/// z = N^2 - sin^2 theta_i: shared by [`Conductor`] and `cook_torrance::ggx_conductor_local`,
+/// which forms |z| and sqrt(|z| + |Re z|) from the half vector's components without the cosine.
+#[derive(Clone, Copy)]
+pub(crate) struct ConductorWide<W> {
+    /// Re(N^2) = eta^2 - k^2.
+    pub(crate) n2_re: W,
+    /// Re(N^2) - 1 = (eta - 1)(eta + 1) - k^2 (no cancellation for N near 1).
+    pub(crate) u_re: W,
+    /// |Im(N^2)| = 2 eta k.
+    pub(crate) b: W,
+    /// |N^2 - 1|^2.
+    u_abs2: W,
+}
+
+impl<W: Real<Scalar = f64>> ConductorWide<W> {
+    #[inline]
+    pub(crate) fn new(eta: W, k: W) -> Self {
+        let k2 = k * k;
+        let n2_re = eta.mul_add(eta, -k2);
+        let u_re = (eta - W::ONE).mul_add(eta + W::ONE, -k2);
+        let u_im = W::TWO * eta * k;
+        Self {
+            n2_re,
+            u_re,
+            b: u_im.abs(),
+            u_abs2: u_re.mul_add(u_re, u_im * u_im),
+        }
+    }
+
+    /// F from the cosine c in [0, 1], Re z (its sign only), |z| and t = sqrt(|z| + |Re z|).
+    #[inline]
+    pub(crate) fn ratio(self, c: W, z_re: W, norm: W, t: W) -> W {
         // The arrangement of `conductor_fast` without its scalings: f32 inputs, between 2^-149
         // and 2^128, keep every product below (squares, |u|^2 ~ |N|^4, |c + s|^4 (A + B)
         // ~ |N|^6 c^2) inside f64's normal range, so no power of two is needed. The squares of
@@ -690,24 +736,15 @@ impl crate::real::sealed::Widened<3> for Conductor {
         // difference |z| - |Re z| where Re z < 0), so F is within a few dozen units of 2^-53
         // of itself before its one rounding to f32, except near the critical angle of a
         // dielectric-like N, where one rounding of the cosine itself moves F by far more.
-        let k2 = k * k;
-        let n2_re = eta.mul_add(eta, -k2);
-        let u_re = (eta - W::ONE).mul_add(eta + W::ONE, -k2);
-        let u_im = W::TWO * eta * k;
-        let u_abs2 = u_re.mul_add(u_re, u_im * u_im);
-        let s2 = (W::ONE - c) * (W::ONE + c);
-        let c2 = c * c;
-        let z_re = W::select(c2.simd_le(n2_re), c.mul_add(c, u_re), n2_re - s2);
+        //
         // s = sqrt(z), principal root (Press et al., "Numerical Recipes", section 5.5):
         // |s|^2 = |z|, t = sqrt(|z| + |Re z|) = sqrt(2) sqrt((|z| + |Re z|) / 2), and
         // 2 Re(s) = sqrt(2) t where Re z >= 0, sqrt(2) |Im z| / t otherwise. Written as
         // h / w with (h, w) = (sqrt(2) t, 1) or (sqrt(2) |Im z|, t), so that |c + s|^2 =
         // c (c + 2 Re s) + |s|^2 and A + B = A + c s2 2 Re(s) are multiplied by w and the
         // one division left is the final one: F = |u|^2 A w^3 / ((|c + s|^2 w)^2 (A + B) w).
-        let a = z_re.abs();
-        let b = u_im.abs();
-        let norm = a.mul_add(a, b * b).sqrt();
-        let t = (norm + a).sqrt();
+        let s2 = (W::ONE - c) * (W::ONE + c);
+        let c2 = c * c;
         let root2 = W::splat(core::f64::consts::SQRT_2);
         let pos = z_re.simd_ge(W::ZERO);
         // h / w is unchanged by a common factor: 2^-100 where |z| > 2^200 (|N| above about
@@ -717,14 +754,14 @@ impl crate::real::sealed::Widened<3> for Conductor {
             W::splat(7.888_609_052_210_118e-31),
             W::ONE,
         );
-        let h = root2 * W::select(pos, t, b * lambda);
+        let h = root2 * W::select(pos, t, self.b * lambda);
         let w = W::select(pos, W::ONE, t * lambda);
         let pw = c.mul_add(c.mul_add(w, h), norm * w);
         let a_par = c2.mul_add(norm, s2 * s2);
         let abw = (c * s2).mul_add(h, a_par * w);
-        let ratio = (u_abs2 * a_par * (w * w * w)) / (pw * pw * abw);
+        let ratio = (self.u_abs2 * a_par * (w * w * w)) / (pw * pw * abw);
         // At c = 0 the ratio is 1 only to rounding: 1, or 0 without an interface (N = 1).
-        let no_interface = u_re.simd_eq(W::ZERO) & u_im.simd_eq(W::ZERO);
+        let no_interface = self.u_abs2.simd_eq(W::ZERO);
         let grazing = W::select(no_interface, W::ZERO, W::ONE);
         W::select(c.simd_gt(W::ZERO), ratio.min(W::ONE), grazing)
     }

@@ -1040,6 +1040,14 @@ pub(crate) mod sealed {
         /// exponent sits in the low significand bits and is shifted into place. Outside that
         /// range unspecified (no panic).
         fn pow2_bits(self, token: Token) -> Self;
+        /// The seed of a reciprocal square root from the bits of `self` >= 0: the bit pattern
+        /// `R - (bits >> 1)` (halving and negating the exponent, the significand's linear
+        /// part absorbed by R: 0x5f37_59df for f32 types, 0x5fe6_eb50_c7b5_37a9 for f64 types;
+        /// Lomont 2003, "Fast Inverse Square Root"), within 3.5 % of 1 / sqrt(self) for
+        /// every positive normal `self`; integer operations only, the same bits on every
+        /// target. 0 gives a finite value (about 2^63 / 2^511); subnormal, infinite and NaN
+        /// input give an unspecified value (no panic).
+        fn rsqrt_bits(self, token: Token) -> Self;
         /// The kernel `k` on `x`: on `f32` and `f32x8` its `wide` form in f64 (`f64`, resp.
         /// two `f64x4` halves), rounded to f32 once (`crate::widen`); on `f64` and `f64x4`
         /// its `native` form.
@@ -1067,6 +1075,10 @@ pub(crate) mod sealed {
             f32::from_bits(self.to_bits() << 23)
         }
         #[inline]
+        fn rsqrt_bits(self, _: Token) -> Self {
+            f32::from_bits(0x5f37_59df_u32.wrapping_sub(self.to_bits() >> 1))
+        }
+        #[inline]
         fn via_f64<K: Widened<N>, const N: usize>(x: [Self; N], k: K, _: Token) -> Self {
             let y = k.wide::<f64>(x.map(f64::from));
             if K::TINY {
@@ -1086,6 +1098,10 @@ pub(crate) mod sealed {
             f64::from_bits(self.to_bits() << 52)
         }
         #[inline]
+        fn rsqrt_bits(self, _: Token) -> Self {
+            f64::from_bits(0x5fe6_eb50_c7b5_37a9_u64.wrapping_sub(self.to_bits() >> 1))
+        }
+        #[inline]
         fn via_f64<K: Widened<N>, const N: usize>(x: [Self; N], k: K, _: Token) -> Self {
             k.native(x)
         }
@@ -1098,6 +1114,10 @@ pub(crate) mod sealed {
         #[inline]
         fn pow2_bits(self, _: Token) -> Self {
             Self::from_bits(self.to_bits() << 23_u32)
+        }
+        #[inline]
+        fn rsqrt_bits(self, _: Token) -> Self {
+            Self::from_bits(wide::u32x8::splat(0x5f37_59df) - (self.to_bits() >> 1_u32))
         }
         #[inline]
         fn via_f64<K: Widened<N>, const N: usize>(x: [Self; N], k: K, _: Token) -> Self {
@@ -1123,6 +1143,10 @@ pub(crate) mod sealed {
         #[inline]
         fn pow2_bits(self, _: Token) -> Self {
             Self::from_bits(self.to_bits() << 52_u64)
+        }
+        #[inline]
+        fn rsqrt_bits(self, _: Token) -> Self {
+            Self::from_bits(wide::u64x4::splat(0x5fe6_eb50_c7b5_37a9) - (self.to_bits() >> 1_u64))
         }
         #[inline]
         fn via_f64<K: Widened<N>, const N: usize>(x: [Self; N], k: K, _: Token) -> Self {
