@@ -1033,7 +1033,7 @@ pub(crate) mod sealed {
         /// result is that of the exact product, to within the exponential's own error, where
         /// 2^-fl(b x) would carry fl's absolute rounding (up to 2^-18 at b x = 108, 1e-5
         /// relative in the result). NaN gives NaN; outside that range unspecified. `f32` and
-        /// `f32x8`: [`super::exp2_neg_prod_single`], the same operations on both (lanes equal
+        /// `f32x8`: `exp2_neg_prod_single`, the same operations on both (lanes equal
         /// scalars bit for bit), no branch, no subnormal intermediate where b x is 0 or at
         /// least 2^-100; `f64` and `f64x4`: libm's exp2 of fl(b x) times 1 - e ln 2 for the
         /// product's error e (`crate::dw::two_prod`), lane by lane. For the `_fast` Beckmann D.
@@ -1143,6 +1143,7 @@ pub(crate) mod sealed {
 /// each coefficient then rounded to f32. Evaluated in f32, within 2 ULP of
 /// 2^f (`exp2_neg_prod_within_two_ulp` below). Degree 6 would be 1 ULP, at one multiply-add
 /// more per lane (5 % of `beckmann::d_fast`'s time on f32x8).
+#[allow(clippy::approx_constant)] // c1 is fitted: one f32 ULP below ln 2, not ln 2
 const EXP2_POLY: [f32; 5] = [
     0.693_147,
     0.240_222_42,
