@@ -658,8 +658,8 @@ impl crate::real::sealed::Widened<2> for DIso {
 ///
 /// Run time (native build, one core of an AMD EPYC (Zen 4), 10^6 uniform cosines, alpha = 0.3,
 /// through [`crate::batch::run_f32`], CPU time, one interleaved run of `bench/mitsuba/compare.py
-/// --n 1000000` under a load average of 6): 0.63 ms, 0.92x Mitsuba 3's `eval` on the same batch
-/// (0.68 ms), whose error there is 185 ULP against this tier's 12.4 (median 1.3), and 0.43x
+/// --n 1000000` under a load average of 5): 0.60 ms, 0.93x Mitsuba 3's `eval` on the same batch
+/// (0.65 ms), whose error there is 185 ULP against this tier's 12.4 (median 1.3), and 0.42x
 /// [`d`]; the form before this one, four roundings in E, took 0.73 ms at 332 ULP (1.15x
 /// Mitsuba in a run under a load of 10). Without fused multiply-adds the exact products take
 /// Dekker's splits (about 17 operations each instead of one).
