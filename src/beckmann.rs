@@ -70,8 +70,6 @@ use crate::vec3::any_nonfinite3;
 
 /// 1 / (2 sqrt(pi)).
 const FRAC_1_2SQRT_PI: f64 = 0.282_094_791_773_878_14;
-/// 1 / sqrt(pi).
-const FRAC_1_SQRT_PI: f64 = 0.564_189_583_547_756_3;
 
 /// The exponent E = tan^2(theta) / alpha^2 = (1 - c^2) / (c^2 alpha^2) of the isotropic
 /// Beckmann D, with c^2 alpha^2 (the denominator, for D's own c^4 alpha^2 below).
@@ -601,98 +599,136 @@ impl crate::real::sealed::Widened<2> for DIso {
 
 /// Isotropic Beckmann NDF in working precision, the fast companion of [`d`]: the same
 /// D = exp(-tan^2 / alpha^2) / (pi alpha^2 c^4) (Walter et al. 2007 eq. 25) with one division
-/// and the lane type's own exponential, as renderers evaluate it (Mitsuba 3's
-/// `MicrofacetDistribution::eval`, pbrt-v4's Beckmann `D`), arranged so that for normal inputs
-/// (and 0) no intermediate is ever a subnormal number (on x86 each costs a microcode assist of
-/// about a hundred cycles, and a Beckmann lobe's tail is full of them; `tests/lanes/exp.rs`
-/// reads the x86 flags that record one):
+/// and an exponential of the lane type's own, as renderers evaluate it (Mitsuba 3's
+/// `MicrofacetDistribution::eval`, pbrt-v4's Beckmann `D`), but with the exponent carried to
+/// about twice the working precision, and arranged so that for normal inputs (and 0) no
+/// intermediate is ever a subnormal number (on x86 each costs a microcode assist of about a
+/// hundred cycles, and a Beckmann lobe's tail is full of them; `tests/lanes/exp.rs` reads the
+/// x86 flags that record one):
 ///
-/// r = 1 / (c alpha)^2, E = (1 - c^2) r, y = exp(-E / 2) r alpha / sqrt(pi), D = y^2,
+/// tan4 = 4 / c^2 - 4 = 4 tan^2, t = E log2(e) / 2 = B4 tan4 with B4 = log2(e) / (8 alpha^2),
+/// y = 2^-t / (sqrt(pi) alpha c^2), D = y^2.
 ///
-/// with 1 - c^2 in one fused multiply-add where the target has FMA, exp(-E / 2) as 2^-t for
-/// t = E / (2 ln 2) (a polynomial on f32 lanes, libm's exp2 elsewhere), cosines below 2^-40
-/// (f32) / 2^-400 (f64) raised to that floor (D is 0 there either way), and D = 0 wherever it
-/// is below the smallest normal number (where E >= 150 in f32 / 1380 in f64, or y^2 would be
-/// subnormal): an absolute error below 1.2e-38 (f32) / 2.3e-308 (f64). A y up to 2^-15
+/// exp(-E) turns an absolute error in E into a relative one in D, so a relative rounding of
+/// E costs E times as much in D (Mitsuba's E, from (x^2 + y^2) / z^2, carries a few roundings:
+/// up to about 2 E ULP). Here v = 2 / c (the one division) and its exact remainder 2 - v c
+/// give 4 / c^2 to first order beyond the working precision, v^2 and B4 are split exactly
+/// (Dekker's products, one multiply-add each where the target has them), and the exponential
+/// takes B4 tan4 as an exact product of its high parts plus a first-order correction
+/// (2^-t = 2^-n p(f) with f = n - B4 tan_s from one multiply-add, times 1 - ln(2) B4 x for the
+/// low parts x): what is left is a few roundings of D itself and of 2^f, whatever E is. 2^-t
+/// is 2^-n p(f) with p a degree-5 polynomial (within 2 ULP of 2^f) on f32 and f32x8, the same
+/// operations on both, and libm's exp2 on f64 and f64x4. Cosines below the one where E = 150
+/// (f32) / 1380 (f64), c^2 = 1 / (1 + E alpha^2), a bound of alpha alone, are raised to it
+/// (c <= 0 included): D is below the smallest normal number there for every alpha in
+/// [ALPHA_MIN, ALPHA_MAX], t stays within 108.2 / 995.5, where 2^-t is normal, and no select
+/// on E is needed. D = 0 wherever it is below the smallest normal number (y^2 would be
+/// subnormal): an absolute error below 1.2e-38 (f32) / 2.3e-308 (f64); a y up to 2^-15
 /// (relative) below the root of the smallest normal number is raised to it, so that a D whose
-/// exact value is normal is not flushed through y's own error.
+/// exact value is normal is not flushed through y's own error. The factors of alpha alone
+/// (B4 and its rounding, 1 / (sqrt(pi) alpha), the cosine floor: two divisions and a square
+/// root) are computed in the call; in a loop over cosines with one alpha the compiler computes
+/// them once.
 ///
 /// Domain, edges and bad input as [`d`]: n_dot_h in [-1, 1] (above 1 clamped to 1; <= 0
 /// gives 0), alpha in [0, +inf) finite, clamped to [ALPHA_MIN, ALPHA_MAX] (the RMS slope, not
 /// perceptual roughness); D(1) = 1 / (pi alpha^2), the peak for alpha <= 1 / sqrt(2); NaN for
 /// NaN input, alpha < 0 or +inf.
 ///
-/// Accuracy: E carries about four roundings, which the exponential turns into an absolute
-/// error of its argument E times larger, and the square doubles: the error grows as about
-/// 5 E ULP, i.e. far in the tail of the lobe where D is small against its peak. Max error
-/// against [`d`] over a grid of cosines from 0 through 1e-7 to 1 and alpha over
-/// [ALPHA_MIN, ALPHA_MAX], plus 400 000 random pairs, by range of E:
+/// Accuracy: max error against [`d`] over a grid of cosines from 0 through 1e-7 to 1 and alpha
+/// over [ALPHA_MIN, ALPHA_MAX], plus 400 000 random pairs, by range of E (default x86-64 build,
+/// without fused multiply-adds), and a search of 4 * 10^6 points per range concentrated at its
+/// top E and at cosines within a few ULP of 1 (that build and `-C target-cpu=native`):
 ///
 /// | E = tan^2 / alpha^2 | <= 1 | (1, 10] | (10, 100] | (100, 1000] |
 /// |---|---|---|---|---|
-/// | f32, f32x8: ULP (relative) | 10 (6.9e-7) | 30 (1.9e-6) | 209 (1.5e-5) | D < 1e-30 |
-/// | f64, f64x4: ULP (relative) | 9 (1.3e-15) | 26 (3.4e-15) | 326 (4.1e-14) | 2507 (3.1e-13) |
+/// | f32, f32x8: ULP (relative) | 13 (8.2e-7) | 15 (9.1e-7) | 66 (5.2e-6) | D < 1e-30 |
+/// | f64, f64x4: ULP (relative) | 9 (1.3e-15) | 10 (1.3e-15) | 10 (1.3e-15) | 10 (1.3e-15) |
 ///
-/// (`cargo test --all-features --test kernels fast_variants:: -- --nocapture`, default x86-64
-/// build; errors counted where D >= 1e-30 in f32, 1e-300 in f64; the test asserts 8 + 5 E ULP at
-/// each bin's upper E, which a denser search may approach). On f64x4 the lanes equal the
-/// scalar results bit for bit; on f32x8 they differ only through the lane 2^-t, a polynomial
-/// within 2 ULP of libm's: within 6 ULP of D.
+/// The search's maxima over all E: f32 30 ULP, 90 with alpha > 334 (at E = 89); f64 14 ULP
+/// (the same in both builds).
 ///
-/// Run time (native build, one core of an AMD EPYC (Zen 4), 10^6 uniform cosines through
-/// [`crate::batch::run_f32`], CPU time): 0.49x [`d`], 0.97x Mitsuba 3's `eval` on the same
-/// batch, whose own error there is 185 ULP against this tier's 332 (`bench/mitsuba/compare.py
-/// --n 1000000`, its README's table).
+/// The error grows with E in two corners only: on f32 with alpha > 334 (cosines below 2^-12
+/// with E < 150), where 4 / c^2 - 4 rounds once more (up to about 2 E ULP: the 66 and 90 above),
+/// and at cosines within a few ULP of 1 with alpha near ALPHA_MIN, where the neglected square
+/// of v's remainder costs up to about 25 ULP. (`cargo test --all-features --test kernels
+/// fast_variants:: -- --nocapture`; errors counted where D >= 1e-30 in f32, 1e-300 in f64; the
+/// test asserts 36 + 2 E ULP (f32) and 18 ULP (f64) at each range's top E.) Lanes equal the
+/// scalar results bit for bit on every lane type.
+///
+/// Run time (native build, one core of an AMD EPYC (Zen 4), 10^6 uniform cosines, alpha = 0.3,
+/// through [`crate::batch::run_f32`], CPU time, one interleaved run of `bench/mitsuba/compare.py
+/// --n 1000000` under a load average of 5): 0.60 ms, 0.93x Mitsuba 3's `eval` on the same batch
+/// (0.65 ms), whose error there is 185 ULP against this tier's 12.4 (median 1.3), and 0.42x
+/// [`d`]; the form before this one, four roundings in E, took 0.73 ms at 332 ULP (1.15x
+/// Mitsuba in a run under a load of 10). Without fused multiply-adds the exact products take
+/// Dekker's splits (about 17 operations each instead of one).
 #[inline]
 #[must_use]
 pub fn d_fast<T: Real>(n_dot_h: T, alpha: T) -> T {
+    use crate::dw::{sub_prod, two_sq};
     let single = crate::dw::single::<T>();
-    // NaN alpha, alpha < 0 or +inf give NaN here, which every step below carries to D.
+    // NaN alpha, alpha < 0 or +inf give NaN here, which B4 below carries to D.
     let a = clamp_alpha(alpha);
-    // Cosines below 2^-40 (f32) / 2^-400 (f64), c <= 0 included, give D = 0 (E > 2^53):
-    // raised to that floor they still do (through the cap on t), and c alpha, c^2 and
-    // (c alpha)^2 stay out of the subnormal range. NaN stays NaN (`clamp` propagates it).
-    let c_min = T::splat(if single {
-        9.094_947_017_729_282e-13
+    // Factors of alpha alone (in a loop over cosines with one alpha, computed once).
+    //
+    // E_CUT: where E >= 150 (f32) / 1380 (f64), D = e^-E E^2 alpha^2 / (pi s2^2) is below the
+    // smallest normal number for every alpha in [ALPHA_MIN, ALPHA_MAX] (that would take
+    // s2 < alpha 1e-11, i.e. E < 1e-11 / alpha), and t = E log2(e) / 2 stays within 108.2 /
+    // 995.5, where 2^-t is normal. Cosines below the one where E = E_CUT, c^2 = 1 / (1 +
+    // E_CUT alpha^2), are raised to it (c <= 0 included): D there is flushed to 0 below, as
+    // its exact value would be, without a select on E.
+    let (e_cut, y_min) = if single {
+        (150.0, 1.084_202_172_485_504_4e-19)
     } else {
-        3.872_591_914_849_318e-121
-    });
-    let c = n_dot_h.clamp(c_min, T::ONE);
-    let ca = c * a;
-    let s2 = crate::microfacet::sin2_working(c);
-    // One division: r = 1 / (c alpha)^2, E = s2 r, and D = e^-E r^2 alpha^2 / pi evaluated as
-    // the square of y = 2^-t r alpha / sqrt(pi) with t = E / (2 ln 2), so that neither 2^-t nor
-    // y is subnormal while D is a normal number. The floor on (c alpha)^2 (2^-63, 2^-511)
-    // keeps r finite. Where E >= 150 (f32) / 1380 (f64), D = e^-E E^2 alpha^2 / (pi s2^2) is
-    // below the smallest normal for every alpha in [ALPHA_MIN, ALPHA_MAX] (that would take
-    // s2 < alpha 1e-11, i.e. E < 1e-11 / alpha): those lanes are 0, and t is capped there
-    // (at 108.2 / 995.5) so that 2^-t r alpha stays a normal number.
-    let (floor, t_cap, y_min) = if single {
-        (
-            1.084_202_172_485_504_4e-19,
-            108.2,
-            1.084_202_172_485_504_4e-19,
-        )
-    } else {
-        (
-            1.491_668_146_240_041_3e-154,
-            995.5,
-            1.491_668_146_240_041_3e-154,
-        )
+        (1380.0, 1.491_668_146_240_041_3e-154)
     };
-    let r = (ca * ca).max(T::splat(floor)).recip();
-    let t = s2 * (r * T::splat(0.5 * core::f64::consts::LOG2_E));
-    let y = t
-        .min(T::splat(t_cap))
-        .exp2_neg(crate::real::sealed::Token::NEW)
-        * (r * (a * T::splat(FRAC_1_SQRT_PI)));
-    // y^2 is subnormal below y = 2^-63 (f32) / 2^-511 (f64): those lanes are 0 first, so no
-    // lane ever holds a subnormal number (each costs a microcode assist on x86). The cut lies
+    let (a2, a2_l) = two_sq(a);
+    let c_floor = a2.mul_add(T::splat(e_cut), T::ONE).sqrt().recip();
+    // B4 = log2(e) / (8 alpha^2) = B4_h (1 + beta): its rounding beta, from the division's exact
+    // remainder, alpha^2's rounding and log2(e) / 8 in two parts (f64: 2.544e-18 below
+    // fl(log2(e) / 8); f32: 2.407e-9 below its f32 rounding).
+    let k4_lo = if single {
+        2.407_453_738_908_272e-9
+    } else {
+        2.544_409_217_616_379e-18
+    };
+    let k4 = T::splat(0.180_336_880_111_120_42);
+    let b4 = k4 / a2;
+    let beta = (sub_prod(k4, b4, a2) - b4 * a2_l + T::splat(k4_lo))
+        * T::splat(1.0 / 0.180_336_880_111_120_42);
+    // M4 = 1 / (4 sqrt(pi) alpha), and M4 ln(2) B4 for the correction of t's rounding.
+    let m4 = T::splat(0.141_047_395_886_939_07) / a;
+    let ml = m4 * (T::splat(core::f64::consts::LN_2) * b4);
+
+    // NaN stays NaN (`max` and `min` propagate it from `self`).
+    let c = n_dot_h.max(c_floor).min(T::ONE);
+    // tan4 = 4 tan^2 = 4 / c^2 - 4 from v = 2 / c (one division) and its exact remainder
+    // e2 = 2 - v c: 4 / c^2 = v^2 (1 + e2) to first order and v^2 = w4 + w4_l exactly, so
+    // tan4 = tan_h + (w4 e2 + w4_l) with tan_h = w4 - 4 (exact for w4 <= 2^26, 2^55 in f64).
+    // The exponential takes tan_s = (v^2 - 4) + w4 e2, two roundings (multiply-adds), within
+    // about an ULP of tan4; the rest, tan_r = (tan_h - tan_s) + (w4 e2 + w4_l), is formed
+    // beside it (tan_h - tan_s is exact: both lie on the grid of tan_s's ULP or w4's, within
+    // 2^24 of its units).
+    let v = T::TWO / c;
+    let e2 = sub_prod(T::TWO, v, c);
+    let (w4, w4_l) = two_sq(v);
+    let tan_h = w4 - T::splat(4.0);
+    let tan_s = w4.mul_add(e2, crate::dw::sq_minus(v, T::splat(4.0)));
+    let tan_r = (tan_h - tan_s) + w4.mul_add(e2, w4_l);
+    // t = E log2(e) / 2 = B4 (tan_s + x), x = tan_r + beta tan_s the first-order part;
+    // y = 2^-t / (sqrt(pi) alpha c^2) = 2^-(B4 tan_s) (1 - ln(2) B4 x) w4 M4, D = y^2, so that
+    // neither 2^-t nor y is subnormal while D is a normal number. The product B4 tan_s is
+    // exact in the exponential.
+    let x = beta.mul_add(tan_s, tan_r);
+    let mk = (-ml).mul_add(x, m4);
+    let y = b4.exp2_neg_prod(tan_s, w4 * mk, crate::real::sealed::Token::NEW);
+    // y^2 is subnormal below y = 2^-63 (f32) / 2^-511 (f64): those lanes are 0, so no lane
+    // ever holds a subnormal number (each costs a microcode assist on x86). The cut lies
     // 2^-15 (relative) below that y, and y between the cut and 2^-63 is raised to 2^-63: a D
-    // whose exact value is a normal number near f32's smallest comes out as that number
-    // rather than 0 (y carries an error of about 1.3e-5 relative there, E being near 87),
-    // an error within the tier's own near that E.
-    let zero = t.simd_ge(T::splat(t_cap)) | y.simd_lt(T::splat(y_min * (1.0 - 1.0 / 32768.0)));
+    // whose exact value is a normal number near the smallest comes out as that number rather
+    // than 0.
+    let zero = y.simd_lt(T::splat(y_min * (1.0 - 1.0 / 32768.0)));
     let y = T::select(zero, T::ZERO, y.max(T::splat(y_min)));
     y * y
 }

@@ -79,6 +79,36 @@ pub(crate) fn two_prod<T: Real>(a: T, b: T) -> (T, T) {
     (p, al * bl - (((p - ah * bh) - al * bh) - ah * bl))
 }
 
+/// c - a b rounded once, for a product a b close enough to c that c - fl(a b) is exact
+/// (fl(a b) within [c / 2, 2 c], Sterbenz's lemma, or c = 0): the residual of a division
+/// (c - q d for q = fl(c / d)) or of a range reduction (n - x for n = round(x)). One fused
+/// multiply-add where the target has them; otherwise c - fl(a b) minus the product's exact
+/// error from [`two_prod`] (same domain). Both round the same exact value once when it is
+/// representable.
+#[inline]
+#[must_use]
+pub(crate) fn sub_prod<T: Real>(c: T, a: T, b: T) -> T {
+    if FUSED {
+        return (-a).mul_add(b, c);
+    }
+    let (p, e) = two_prod(a, b);
+    (c - p) - e
+}
+
+/// a^2 - k rounded once, for k a power of two with |a^2 - k| exact after the subtraction of
+/// fl(a^2) (a^2 below 2^24 k in f32, 2^53 k in f64): one fused multiply-add where the target
+/// has them, otherwise (fl(a^2) - k) + the square's exact error ([`two_sq`]), which rounds the
+/// same exact value once.
+#[inline]
+#[must_use]
+pub(crate) fn sq_minus<T: Real>(a: T, k: T) -> T {
+    if FUSED {
+        return a.mul_add(a, -k);
+    }
+    let (p, e) = two_sq(a);
+    (p - k) + e
+}
+
 /// Whether `Real::mul_add` is fused on this target (x86 with FMA, aarch64 with NEON): then
 /// the error of a product takes one instruction.
 const FUSED: bool = cfg!(any(

@@ -176,7 +176,7 @@ pub(crate) fn alpha_ok<T: Real>(alpha: T) -> T::Mask {
 /// one fused multiply-add (a single rounding, so within 0.5 ULP for every c) where the target
 /// fuses them (x86 with `fma`, aarch64 with NEON, as `Real::mul_add`), otherwise 1 - c c below
 /// c = 1/2 (nothing cancels) and (1 - c)(1 + c) above (1 - c exact there), within 1 ULP.
-#[cfg(any(feature = "ggx", feature = "beckmann"))]
+#[cfg(feature = "ggx")]
 #[inline]
 pub(crate) fn sin2_working<T: Real>(c: T) -> T {
     #[cfg(any(

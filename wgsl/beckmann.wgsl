@@ -21,7 +21,8 @@ fn beckmann_d(n_dot_h: f32, alpha: f32) -> f32 {
     return brdf_above(n_dot_h, x * (scale / pden));
 }
 
-// The fast form of the same D (as the Rust `beckmann::d_fast`): one division r = 1 / (c alpha)^2,
+// The fast form of the same D (the Rust `beckmann::d_fast`'s earlier form, E in working precision,
+// its error growing as about 4 E ULP): one division r = 1 / (c alpha)^2,
 // D = y^2 with y = 2^-t r alpha / sqrt(pi), t = (1 - c^2) r / (2 ln 2), so that neither 2^-t nor
 // y is subnormal while D is normal; cosines below 2^-40 (c <= 0 included) give 0 through the
 // cap on t.

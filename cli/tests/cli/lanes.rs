@@ -35,7 +35,6 @@ const POLYNOMIAL: &[(&str, u128)] = &[
     ("cook_torrance::beckmann_conductor_rgb", 4),
     ("cook_torrance::beckmann_dielectric", 4),
     ("cook_torrance::beckmann_schlick_rgb", 4),
-    ("beckmann::d_fast", 6),
     ("beckmann::Beckmann::d", 4),
     ("beckmann::Beckmann::lambda", 4),
     ("beckmann::Beckmann::cos_lambda", 4),
