@@ -94,6 +94,21 @@ fn ibl_dfg_specular(
     );
 }
 
+// The split-sum specular radiance from Filament's two DFG channels (x = B, y = E = A + B), per
+// channel L_prefiltered mix(x, y, F0) = L (x + F0 (y - x)) (Filament's `specularDFG`; Guy and
+// Agopian, "Physically Based Rendering in Filament", 5.3.4.3), capped to +-MAX as above.
+fn ibl_dfg_specular_filament(
+    prefiltered_r: f32, prefiltered_g: f32, prefiltered_b: f32,
+    f0_r: f32, f0_g: f32, f0_b: f32, dfg_x: f32, dfg_y: f32,
+) -> vec3<f32> {
+    let diff = clamp(dfg_y - dfg_x, -BRDF_F32_MAX, BRDF_F32_MAX);
+    return vec3<f32>(
+        brdf_ibl_specular(prefiltered_r, f0_r, dfg_x, diff),
+        brdf_ibl_specular(prefiltered_g, f0_g, dfg_x, diff),
+        brdf_ibl_specular(prefiltered_b, f0_b, dfg_x, diff),
+    );
+}
+
 // The mip of a roughness on a linear mapping, r (n_mips - 1).
 fn ibl_dfg_mip_from_roughness_linear(roughness: f32, n_mips: f32) -> f32 {
     return roughness * (n_mips - 1.0);

@@ -47,6 +47,15 @@ def narkowicz_polynomial(n_dot_v: npt.ArrayLike, roughness: npt.ArrayLike, *, dt
     """Polynomial DFG fit for GGX [A, B] (EnvDFGPolynomial), Narkowicz 2014."""
     ...
 
+class ibl_dfg_specular_filament_result(NamedTuple):
+    radiance_r: Any
+    radiance_g: Any
+    radiance_b: Any
+
+def specular_filament(prefiltered_r: npt.ArrayLike, prefiltered_g: npt.ArrayLike, prefiltered_b: npt.ArrayLike, f0_r: npt.ArrayLike, f0_g: npt.ArrayLike, f0_b: npt.ArrayLike, dfg_x: npt.ArrayLike, dfg_y: npt.ArrayLike, *, dtype: npt.DTypeLike = None, lanes: bool = True, threads: bool = True, check: bool = False) -> ibl_dfg_specular_filament_result:
+    """Split-sum specular radiance from Filament's DFG channels, prefiltered mix(x, y, F0), Guy and Agopian, Filament 5.3.4.3."""
+    ...
+
 class ibl_dfg_specular_result(NamedTuple):
     radiance_r: Any
     radiance_g: Any
