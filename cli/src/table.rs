@@ -1737,6 +1737,18 @@ pub static KERNELS: &[Kernel] = &[
         [cook_torrance::ggx_dielectric(cosines(n_dot_v, n_dot_l, n_dot_h, v_dot_h), Alpha(alpha), eta)]
     ),
     kernel!(
+        "cook_torrance::ggx_dielectric_fast",
+        "Rough dielectric reflection in working precision, GGX with the dielectric Fresnel, \
+         Walter et al. 2007; Born and Wolf 1.5",
+        [n_dot_v: Domain::COS, n_dot_l: Domain::COS, n_dot_h: Domain::COS, v_dot_h: Domain::COS,
+         alpha: ALPHA, eta: ETA] -> [f: Domain::NONNEG],
+        [cook_torrance::ggx_dielectric_fast(
+            cosines(n_dot_v, n_dot_l, n_dot_h, v_dot_h),
+            Alpha(alpha),
+            eta
+        )]
+    ),
+    kernel!(
         "cook_torrance::beckmann_conductor_rgb",
         "Rough conductor, Beckmann, RGB exact conductor Fresnel, Walter et al. 2007; Born and \
          Wolf 14.2",

@@ -1575,6 +1575,29 @@ fn cook_torrance_rows<T: Real>(t: &mut Vec<Kernel<T>>) {
                 )]
             },
         ));
+        t.push(k(
+            "cook_torrance::ggx_dielectric_fast",
+            vec![
+                c("n_dot_h", NH),
+                c("n_dot_v", NV),
+                c("n_dot_l", NL),
+                c("v_dot_h", VH),
+                p("alpha", 0.3, &ALPHA_BAD),
+                p("eta", 1.5, &ETA_BAD),
+            ],
+            |x| {
+                vec![ct::ggx_dielectric_fast(
+                    Cosines {
+                        n_dot_v: x[1],
+                        n_dot_l: x[2],
+                        n_dot_h: x[0],
+                        v_dot_h: x[3],
+                    },
+                    Alpha(x[4]),
+                    x[5],
+                )]
+            },
+        ));
     }
     #[cfg(feature = "beckmann")]
     t.push(k(

@@ -312,6 +312,13 @@ pub fn direct<T: Scalar>(path: &str, a: &[T]) -> Option<Vec<T>> {
         "cook_torrance::ggx_dielectric" => {
             vec![cook_torrance::ggx_dielectric(c(a, 0), Alpha(a[4]), a[5])]
         }
+        "cook_torrance::ggx_dielectric_fast" => {
+            vec![cook_torrance::ggx_dielectric_fast(
+                c(a, 0),
+                Alpha(a[4]),
+                a[5],
+            )]
+        }
         "cook_torrance::beckmann_conductor_rgb" => three(cook_torrance::beckmann_conductor_rgb(
             c(a, 0),
             Alpha(a[4]),

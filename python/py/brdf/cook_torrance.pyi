@@ -97,6 +97,10 @@ def ggx_dielectric(n_dot_v: npt.ArrayLike, n_dot_l: npt.ArrayLike, n_dot_h: npt.
     """Rough dielectric reflection, GGX with the exact dielectric Fresnel, Walter et al. 2007; Born and Wolf 1.5."""
     ...
 
+def ggx_dielectric_fast(n_dot_v: npt.ArrayLike, n_dot_l: npt.ArrayLike, n_dot_h: npt.ArrayLike, v_dot_h: npt.ArrayLike, alpha: npt.ArrayLike, eta: npt.ArrayLike, *, dtype: npt.DTypeLike = None, lanes: bool = True, threads: bool = True, check: bool = False) -> Any:
+    """Rough dielectric reflection in working precision, GGX with the dielectric Fresnel, Walter et al. 2007; Born and Wolf 1.5."""
+    ...
+
 class cook_torrance_beckmann_conductor_rgb_result(NamedTuple):
     f_r: Any
     f_g: Any
