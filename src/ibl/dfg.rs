@@ -147,6 +147,19 @@ pub fn table(
     n_roughness: usize,
     samples: u32,
 ) -> Result<(), ParamError> {
+    fill(out, n_nov, n_roughness, samples, |t| t)
+}
+
+/// The cells of a DFG table: each [`dfg`] at its cell centre (module docs, "Table layout"),
+/// its `[A, B, E]` kept by `pick` and stored in f32; the dimension and sample checks of
+/// [`table`].
+fn fill<const N: usize>(
+    out: &mut [[f32; N]],
+    n_nov: usize,
+    n_roughness: usize,
+    samples: u32,
+    pick: impl Fn([f64; 3]) -> [f64; N],
+) -> Result<(), ParamError> {
     check_dims(out.len(), n_nov, n_roughness)?;
     if samples == 0 {
         return Err(ParamError {
@@ -158,8 +171,7 @@ pub fn table(
         let (i, j) = (idx % n_nov, idx / n_nov);
         let n_dot_v = (i as f64 + 0.5) / n_nov as f64;
         let r = (j as f64 + 0.5) / n_roughness as f64;
-        let t = dfg(n_dot_v, r * r, samples);
-        *cell = [t[0] as f32, t[1] as f32, t[2] as f32];
+        *cell = pick(dfg(n_dot_v, r * r, samples)).map(|x| x as f32);
     }
     Ok(())
 }
@@ -177,21 +189,7 @@ pub fn table_filament(
     n_roughness: usize,
     samples: u32,
 ) -> Result<(), ParamError> {
-    check_dims(out.len(), n_nov, n_roughness)?;
-    if samples == 0 {
-        return Err(ParamError {
-            param: "samples",
-            expected: ">= 1",
-        });
-    }
-    for (idx, cell) in out.iter_mut().enumerate() {
-        let (i, j) = (idx % n_nov, idx / n_nov);
-        let n_dot_v = (i as f64 + 0.5) / n_nov as f64;
-        let r = (j as f64 + 0.5) / n_roughness as f64;
-        let t = dfg(n_dot_v, r * r, samples);
-        *cell = [t[1] as f32, t[2] as f32];
-    }
-    Ok(())
+    fill(out, n_nov, n_roughness, samples, |[_, b, e]| [b, e])
 }
 
 /// Bilinear interpolation of a [`table`] at (`n_dot_v`, perceptual `roughness`), as a texture
