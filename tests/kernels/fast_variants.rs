@@ -386,21 +386,33 @@ fn conductor_points() -> Vec<[f64; 3]> {
     v
 }
 
-/// (well-conditioned max, ill-conditioned max in units of the cosine's 1-ULP change).
-fn conductor_on<T: Real<Scalar = S>, S: Sc>() -> (Err, Err, u64) {
+/// `fast` against `exact` over `points` on lane type `T`, F checked to lie in [0, 1] (NaN
+/// from both where `out_of_domain` holds for the point as cast): (well-conditioned max,
+/// ill-conditioned max in units of the cosine's 1-ULP change, lanes against scalars). The
+/// oracle's convention: where a 1-ULP change of the cosine (the first argument) moves the
+/// exact F by more than 8 ULP (near a critical or Brewster's angle), the error counts in units
+/// of that change.
+fn fresnel_on<T: Real<Scalar = S>, S: Sc, const N: usize>(
+    points: &[[f64; N]],
+    exact: impl Fn([T; N]) -> T,
+    fast: impl Fn([T; N]) -> T,
+    fast_s: impl Fn([S; N]) -> S,
+    out_of_domain: impl Fn(&[f64]) -> bool,
+) -> (Err, Err, u64) {
     let (mut well, mut ill) = (Err::default(), Err::default());
-    let lanes = sweep::<T, S, 3>(
-        &conductor_points(),
-        |[c, e, k]| fresnel::conductor(c, e, k),
-        |[c, e, k]| fresnel::conductor_fast(c, e, k),
-        |[c, e, k]| fresnel::conductor_fast(c, e, k),
+    let lanes = sweep::<T, S, N>(
+        points,
+        exact,
+        fast,
+        fast_s,
         |p, f, e, [eu, ed]| {
             let fv: f64 = f.into();
+            if out_of_domain(p) {
+                assert!(fv.is_nan() && e.into().is_nan(), "F = {fv} at {p:?}");
+                return;
+            }
             assert!((0.0..=1.0).contains(&fv), "F = {fv} at {p:?}");
             if let Some((u, r)) = error(f, e) {
-                // The oracle's convention: where a 1-ULP change of the cosine moves the exact
-                // F by more than 8 ULP (k = 0 near the critical angle), the error counts in
-                // units of that change.
                 let cond = S::ulps(eu, e).max(S::ulps(ed, e)) as f64;
                 if cond > 8.0 {
                     ill.add(u / cond, r, p);
@@ -414,6 +426,43 @@ fn conductor_on<T: Real<Scalar = S>, S: Sc>() -> (Err, Err, u64) {
     (well, ill, lanes)
 }
 
+/// Prints the table of [`fresnel_on`]'s rows (one per lane type) and asserts both bounds.
+fn check_fresnel_rows(
+    title: &str,
+    rows: &[(&str, (Err, Err, u64)); 4],
+    bound: f64,
+    ill_bound: f64,
+) {
+    println!(
+        "{title} ({} points per type)",
+        rows[0].1.0.n + rows[0].1.1.n
+    );
+    println!(
+        "| type | max ULP (well conditioned) | max relative | ill-conditioned: max in cosine-ULP changes | lanes vs scalar |"
+    );
+    for (ty, (w, i, lanes)) in rows {
+        println!(
+            "| {ty} | {} | {:.2e} | {:.2} (n {}) | {lanes} ULP |",
+            w.ulp, w.rel, i.ulp, i.n
+        );
+        println!("  {ty} worst well {:?}; worst ill {:?}", w.worst, i.worst);
+    }
+    for (ty, (w, i, _)) in rows {
+        assert!(w.ulp <= bound, "{ty}: {} ULP", w.ulp);
+        assert!(i.ulp <= ill_bound, "{ty}: {} changes", i.ulp);
+    }
+}
+
+fn conductor_on<T: Real<Scalar = S>, S: Sc>() -> (Err, Err, u64) {
+    fresnel_on::<T, S, 3>(
+        &conductor_points(),
+        |[c, e, k]| fresnel::conductor(c, e, k),
+        |[c, e, k]| fresnel::conductor_fast(c, e, k),
+        |[c, e, k]| fresnel::conductor_fast(c, e, k),
+        |_| false,
+    )
+}
+
 #[test]
 fn conductor_fast_is_within_its_stated_error_of_conductor() {
     let rows = [
@@ -422,24 +471,12 @@ fn conductor_fast_is_within_its_stated_error_of_conductor() {
         ("f32x8", conductor_on::<f32x8, f32>()),
         ("f64x4", conductor_on::<f64x4, f64>()),
     ];
-    println!(
-        "fresnel::conductor_fast against fresnel::conductor ({} points per type)",
-        rows[0].1.0.n + rows[0].1.1.n
+    check_fresnel_rows(
+        "fresnel::conductor_fast against fresnel::conductor",
+        &rows,
+        CONDUCTOR_BOUND_ULPS,
+        CONDUCTOR_ILL_BOUND,
     );
-    println!(
-        "| type | max ULP (well conditioned) | max relative | ill-conditioned: max in cosine-ULP changes | lanes vs scalar |"
-    );
-    for (ty, (w, i, lanes)) in &rows {
-        println!(
-            "| {ty} | {} | {:.2e} | {:.2} (n {}) | {lanes} ULP |",
-            w.ulp, w.rel, i.ulp, i.n
-        );
-        println!("  {ty} worst well {:?}; worst ill {:?}", w.worst, i.worst);
-    }
-    for (ty, (w, i, _)) in &rows {
-        assert!(w.ulp <= CONDUCTOR_BOUND_ULPS, "{ty}: {} ULP", w.ulp);
-        assert!(i.ulp <= CONDUCTOR_ILL_BOUND, "{ty}: {} changes", i.ulp);
-    }
 }
 
 /// Max ULP of `conductor_fast` where the result is well conditioned. Its roundings are those
@@ -567,34 +604,15 @@ fn dielectric_points() -> Vec<[f64; 2]> {
     v
 }
 
-/// (well-conditioned max, ill-conditioned max in units of the cosine's 1-ULP change, lanes).
 fn dielectric_on<T: Real<Scalar = S>, S: Sc>() -> (Err, Err, u64) {
-    let (mut well, mut ill) = (Err::default(), Err::default());
-    let lanes = sweep::<T, S, 2>(
+    fresnel_on::<T, S, 2>(
         &dielectric_points(),
         |[c, e]| fresnel::dielectric(c, e),
         |[c, e]| fresnel::dielectric_fast(c, e),
         |[c, e]| fresnel::dielectric_fast(c, e),
-        |p, f, e, [eu, ed]| {
-            let fv: f64 = f.into();
-            // eta cast to f32 leaves the domain (0 or +inf): both forms give NaN.
-            if !(p[1] > 0.0 && p[1].is_finite()) {
-                assert!(fv.is_nan() && e.into().is_nan(), "F = {fv} at {p:?}");
-                return;
-            }
-            assert!((0.0..=1.0).contains(&fv), "F = {fv} at {p:?}");
-            if let Some((u, r)) = error(f, e) {
-                let cond = S::ulps(eu, e).max(S::ulps(ed, e)) as f64;
-                if cond > 8.0 {
-                    ill.add(u / cond, r, p);
-                } else {
-                    well.add(u, r, p);
-                }
-            }
-        },
-        0,
-    );
-    (well, ill, lanes)
+        // eta cast to f32 leaves the domain (0 or +inf): both forms give NaN.
+        |p| !(p[1] > 0.0 && p[1].is_finite()),
+    )
 }
 
 #[test]
@@ -605,24 +623,12 @@ fn dielectric_fast_is_within_its_stated_error_of_dielectric() {
         ("f32x8", dielectric_on::<f32x8, f32>()),
         ("f64x4", dielectric_on::<f64x4, f64>()),
     ];
-    println!(
-        "fresnel::dielectric_fast against fresnel::dielectric ({} points per type)",
-        rows[0].1.0.n + rows[0].1.1.n
+    check_fresnel_rows(
+        "fresnel::dielectric_fast against fresnel::dielectric",
+        &rows,
+        DIELECTRIC_BOUND_ULPS,
+        DIELECTRIC_ILL_BOUND,
     );
-    println!(
-        "| type | max ULP (well conditioned) | max relative | ill-conditioned: max in cosine-ULP changes | lanes vs scalar |"
-    );
-    for (ty, (w, i, lanes)) in &rows {
-        println!(
-            "| {ty} | {} | {:.2e} | {:.2} (n {}) | {lanes} ULP |",
-            w.ulp, w.rel, i.ulp, i.n
-        );
-        println!("  {ty} worst well {:?}; worst ill {:?}", w.worst, i.worst);
-    }
-    for (ty, (w, i, _)) in &rows {
-        assert!(w.ulp <= DIELECTRIC_BOUND_ULPS, "{ty}: {} ULP", w.ulp);
-        assert!(i.ulp <= DIELECTRIC_ILL_BOUND, "{ty}: {} changes", i.ulp);
-    }
 }
 
 /// Max ULP of `dielectric_fast` where the result is well conditioned: its roundings are those
