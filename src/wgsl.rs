@@ -140,6 +140,15 @@ pub const ROUGH_DIELECTRIC: &str = include_str!("../wgsl/rough_dielectric.wgsl")
 /// [`ROUGH_DIELECTRIC`] before it.
 pub const TRANSMISSION: &str = include_str!("../wgsl/transmission.wgsl");
 
+/// The twins of `brdf::iridescence`'s thin-film reflectance over a dielectric and over a
+/// conductor base (`iridescence_dielectric`, `iridescence_conductor`, taking the film's
+/// thickness and index, `ThinFilm::new`'s arguments, first). The Airy sum's phases reach
+/// thousands of radians, where WGSL states no accuracy for `cos`: the twins carry them in half
+/// turns and reduce them exactly (u = n + s, n = round(u), s in [-1/2, 1/2] by Sterbenz's
+/// lemma) before `cos` and `sin` of pi s, and rotate by the interfaces' complex Fresnel
+/// coefficients instead of adding `atan2` phases.
+pub const IRIDESCENCE: &str = include_str!("../wgsl/iridescence.wgsl");
+
 /// [`COMMON`] followed by every family, each after the families it needs: one module defining
 /// every twin.
 pub const ALL: &str = concat!(
@@ -159,6 +168,7 @@ pub const ALL: &str = concat!(
     include_str!("../wgsl/layers.wgsl"),
     include_str!("../wgsl/rough_dielectric.wgsl"),
     include_str!("../wgsl/transmission.wgsl"),
+    include_str!("../wgsl/iridescence.wgsl"),
 );
 
 /// One family's WGSL, with the families it calls into.
@@ -249,5 +259,10 @@ pub const FAMILIES: &[Family] = &[
         name: "transmission",
         source: TRANSMISSION,
         needs: &["ggx", "fresnel", "beckmann", "rough_dielectric"],
+    },
+    Family {
+        name: "iridescence",
+        source: IRIDESCENCE,
+        needs: &[],
     },
 ];

@@ -8,13 +8,17 @@
 //! | operation | own allowance (units of the result's ULP, `f32`) | inherited |
 //! |---|---|---|
 //! | `+`, `-`, `*` | 0.5 (correctly rounded) + 0.5 | exact interval arithmetic |
+//! | `x - y` of two operands, alone (no longer chain), whose intervals keep y / 2 <= x <= 2 y (or one operand exactly 0) | 0.5 on the result (exact by Sterbenz's lemma; the half ULP pays for a contraction of an inexact operand's product into an `fma`, which rounds once), none where both operands are exact | exact |
+//! | `x * 2^k`, 2^k an exact operand | none (exact; a subnormal result: the 2^-126 below) | exact |
+//! | `round`, `floor` | none (correctly rounded, so exact); an argument interval that holds several integers' rounding ranges gives the alternatives below | |
+//! | `fract` | `x - floor(x)`, the steps as above | |
 //! | `x / y` | 2.5 (for \|y\| in [2^-126, 2^126], else no promise) + 0.5 | exact |
 //! | `inverseSqrt` | 2 + 0.5 | endpoints (monotone) |
 //! | `sqrt` | 1 / `inverseSqrt`: 2 ULP relative on the root is at most 4 ULP of it, the division 2.5, + 0.5 | endpoints |
 //! | `exp`, `exp2` | 3 + 2 \|x\| + 0.5 | endpoints |
 //! | `log`, `log2` | absolute 2^-21 for x in [0.5, 2], else 3 + 0.5 | endpoints |
 //! | `pow(x, y)` | `exp2(y * log2(x))`, each step as above | |
-//! | `sin`, `cos` | absolute 2^-11 for x in [-pi, pi] (no promise outside) + 0.5 | Lipschitz 1 |
+//! | `sin`, `cos` | absolute 2^-11 for x in [-pi, pi] (no promise outside) + 0.5 | Lipschitz 1, per alternative |
 //! | `asin` | `atan2(x, sqrt(1 - x * x))`: the steps as above, then 4096 + 0.5 | corners of the arguments' box |
 //! | `fma(a, b, c)` | `a * b + c`, two roundings as above | |
 //! | `min`, `max`, `clamp`, `saturate`, `abs`, negation | none (exact) | exact interval arithmetic |
@@ -31,6 +35,22 @@
 //! a reordering across an inlined call is not modelled (a known gap of this bound). Every
 //! operation also adds 2^-126 (absolute) where its result may be subnormal, since subnormals
 //! may be flushed to zero; a subnormal argument starts with its own magnitude as its error.
+//!
+//! Range reduction. A value may carry alternatives: `round(u)` or `floor(u)` of a u whose
+//! interval [v - e, v + e] straddles a rounding boundary (a half-integer, an integer) is one of
+//! the two (or few) integers that interval rounds to, each exact, and the interpreter keeps
+//! them all, the form's own value first. Negation, `+`, `-`, `*`, `/` and the builtins act on
+//! each alternative in turn, pairing the alternatives of the same `round` or `floor` (so
+//! `s = u - n` and the sign `(-1)^n` of one choice of n stay together; alternatives of
+//! another source are first taken as their union); any other use (a comparison, a select, a
+//! vector's component, the function's result) takes their union: the form's value, with the
+//! largest distance of any alternative's interval from it as the error. That union is small
+//! exactly where the reduced form is periodic: for `cos(pi u) = (-1)^n cos(pi (u - n))` the
+//! choices n and n + 1 at u = n + 1/2 give values within the errors of each other, and the
+//! argument pi (u - n) stays in [-pi/2, pi/2] for each, where cos and sin keep their promise.
+//! Without the alternatives, the union of u - n over both choices would span [-1/2, 3/2] and
+//! leave [-pi, pi]. Every alternative of a computed value is a value some conforming
+//! implementation may compute, so the bound stays sound.
 //!
 //! A comparison whose operands lie within their errors of each other may go either way on a
 //! GPU: a `select` on it takes the union of both operands' intervals. Where WGSL promises
@@ -84,6 +104,43 @@ enum Val {
         stable: bool,
     },
     Vec(Vec<Num>),
+    /// A number that is one of several intervals, one per choice of a `round` or `floor`
+    /// (`src` numbers it within a run): `alts[0]` is the form's own value (module docs, "Range
+    /// reduction").
+    Alt {
+        src: u32,
+        alts: Vec<Num>,
+    },
+}
+
+/// The union of alternatives around the first (the form's value): the largest distance of
+/// any alternative's interval from it.
+fn hull(alts: &[Num]) -> Num {
+    let v = alts[0].v;
+    let e = alts
+        .iter()
+        .map(|a| (a.v - v).abs() + a.e)
+        .fold(0.0, f64::max);
+    Num { v, e }
+}
+
+impl Val {
+    /// Alternatives as their union; any other value as it is.
+    fn collapsed(self) -> Val {
+        match self {
+            Val::Alt { alts, .. } => Val::Num(hull(&alts)),
+            v => v,
+        }
+    }
+
+    /// A number or the union of alternatives; `None` for a boolean or a vector.
+    fn scalar(&self) -> Option<Num> {
+        match self {
+            Val::Num(n) => Some(*n),
+            Val::Alt { alts, .. } => Some(hull(alts)),
+            _ => None,
+        }
+    }
 }
 
 /// The ULP of `f32` at magnitude `x` (2^-149 below the normal range).
@@ -122,15 +179,41 @@ pub struct Interp<'m> {
     module: &'m Module,
     /// The first reason the row at hand left WGSL's promises, if it did.
     excluded: Option<Excluded>,
+    /// The source number of the next alternatives (`round`, `floor`).
+    next_src: u32,
+    /// Per function, per expression: whether it is an operand of a `+` or `-` (part of a
+    /// longer chain of sums).
+    in_sum: Vec<Vec<bool>>,
 }
 
 impl<'m> Interp<'m> {
     /// An interpreter of `module`'s functions.
     #[must_use]
     pub fn new(module: &'m Module) -> Self {
+        let in_sum = module
+            .functions
+            .iter()
+            .map(|(_, f)| {
+                let mut in_sum = vec![false; f.expressions.len()];
+                for (_, e) in f.expressions.iter() {
+                    if let Expression::Binary {
+                        op: BinaryOperator::Add | BinaryOperator::Subtract,
+                        left,
+                        right,
+                    } = e
+                    {
+                        in_sum[left.index()] = true;
+                        in_sum[right.index()] = true;
+                    }
+                }
+                in_sum
+            })
+            .collect();
         Self {
             module,
             excluded: None,
+            next_src: 0,
+            in_sum,
         }
     }
 
@@ -170,6 +253,7 @@ impl<'m> Interp<'m> {
         }
         Ok(match out {
             Val::Num(n) => vec![n],
+            Val::Alt { alts, .. } => vec![hull(&alts)],
             Val::Vec(v) => v,
             Val::Bool { .. } => panic!("{name} returns a boolean"),
         })
@@ -187,6 +271,7 @@ impl<'m> Interp<'m> {
             f,
             args,
             memo: vec![None; f.expressions.len()],
+            fidx: h.index(),
         };
         self.block(&mut frame, &f.body)
             .unwrap_or_else(|| panic!("{:?} returns nothing", f.name))
@@ -225,9 +310,73 @@ impl<'m> Interp<'m> {
     }
 
     fn num(&mut self, fr: &mut Frame<'m>, h: Handle<Expression>) -> Num {
-        match self.expr(fr, h) {
-            Val::Num(n) => n,
-            other => panic!("{:?}: expected a number, found {other:?}", fr.f.name),
+        let v = self.expr(fr, h);
+        v.scalar()
+            .unwrap_or_else(|| panic!("{:?}: expected a number, found {v:?}", fr.f.name))
+    }
+
+    /// `f` on each alternative of the operands (a number taken as it is; the alternatives of
+    /// the first source among the operands paired by choice; those of any other source as
+    /// their union), or on the numbers themselves where none has alternatives.
+    fn lift(&mut self, vals: &[Val], mut f: impl FnMut(&mut Self, &[Num]) -> Num) -> Val {
+        let first = vals.iter().find_map(|v| match v {
+            Val::Alt { src, alts } => Some((*src, alts.len())),
+            _ => None,
+        });
+        let pick = |v: &Val, j: Option<(u32, usize)>| match (v, j) {
+            (Val::Alt { src, alts }, Some((s, j))) if *src == s => alts[j],
+            (v, _) => v
+                .scalar()
+                .unwrap_or_else(|| panic!("{v:?} where a number was expected")),
+        };
+        let Some((src, n)) = first else {
+            let args: Vec<Num> = vals.iter().map(|v| pick(v, None)).collect();
+            return Val::Num(f(self, &args));
+        };
+        let alts = (0..n)
+            .map(|j| {
+                let args: Vec<Num> = vals.iter().map(|v| pick(v, Some((src, j)))).collect();
+                f(self, &args)
+            })
+            .collect();
+        Val::Alt { src, alts }
+    }
+
+    /// `round` or `floor` (`f`) of `x`: exact; where x's interval holds the rounding ranges of
+    /// up to four integers, each is an alternative (the form's value first); beyond that, their
+    /// union.
+    fn to_integer(&mut self, x: Val, f: fn(f64) -> f64) -> Val {
+        if let Val::Alt { src, alts } = &x
+            && alts.iter().all(|a| f(a.v - a.e) == f(a.v + a.e))
+        {
+            return Val::Alt {
+                src: *src,
+                alts: alts.iter().map(|a| Num { v: f(a.v), e: 0.0 }).collect(),
+            };
+        }
+        let x = x.scalar().expect("round or floor of a number");
+        let (v, lo, hi) = (f(x.v), f(x.v - x.e), f(x.v + x.e));
+        if lo == hi {
+            return Val::Num(Num { v, e: 0.0 });
+        }
+        if hi - lo > 3.0 {
+            return Val::Num(Num {
+                v,
+                e: (v - lo).max(hi - v),
+            });
+        }
+        let mut alts = vec![Num { v, e: 0.0 }];
+        let mut k = lo;
+        while k <= hi {
+            if k != v {
+                alts.push(Num { v: k, e: 0.0 });
+            }
+            k += 1.0;
+        }
+        self.next_src += 1;
+        Val::Alt {
+            src: self.next_src,
+            alts,
         }
     }
 
@@ -266,10 +415,11 @@ impl<'m> Interp<'m> {
             Expression::Compose { components, .. } => {
                 let mut out = Vec::new();
                 for &c in components {
-                    match self.expr(fr, c) {
+                    match self.expr(fr, c).collapsed() {
                         Val::Num(n) => out.push(n),
                         Val::Vec(v) => out.extend(v),
                         Val::Bool { .. } => panic!("boolean vectors are not modelled"),
+                        Val::Alt { .. } => unreachable!("collapsed"),
                     }
                 }
                 Val::Vec(out)
@@ -283,28 +433,42 @@ impl<'m> Interp<'m> {
                 other => panic!("index into {other:?}"),
             },
             Expression::Unary { op, expr } => match (op, self.expr(fr, *expr)) {
-                (UnaryOperator::Negate, Val::Num(n)) => Val::Num(Num { v: -n.v, e: n.e }),
+                (UnaryOperator::Negate, Val::Num(n)) => Val::Num(neg(n)),
+                (UnaryOperator::Negate, Val::Vec(v)) => Val::Vec(v.into_iter().map(neg).collect()),
+                (UnaryOperator::Negate, x @ Val::Alt { .. }) => self.lift(&[x], |_, a| neg(a[0])),
                 (UnaryOperator::LogicalNot, Val::Bool { v, stable }) => Val::Bool { v: !v, stable },
                 (op, x) => panic!("unary {op:?} on {x:?} is not modelled"),
             },
             Expression::Binary { op, left, right } => {
+                use BinaryOperator as B;
                 let (a, b) = (self.expr(fr, *left), self.expr(fr, *right));
-                match (*op, &a, &b) {
-                    (BinaryOperator::Add | BinaryOperator::Subtract, Val::Num(x), Val::Num(y)) => {
-                        let y = if *op == BinaryOperator::Add {
-                            *y
-                        } else {
-                            Num { v: -y.v, e: y.e }
-                        };
-                        let span = self.sum_span(fr, h);
-                        Val::Num(add_in(*x, y, span))
+                let scalar = |v: &Val| matches!(v, Val::Num(_) | Val::Alt { .. });
+                let alt = |v: &Val| matches!(v, Val::Alt { .. });
+                match *op {
+                    B::Add | B::Subtract if scalar(&a) && scalar(&b) => {
+                        let sub = *op == B::Subtract;
+                        let (span, leaves) = self.sum_span(fr, h);
+                        // Two operands alone: no reordering can split them.
+                        let alone = leaves == 2 && !self.in_sum[fr.fidx][h.index()];
+                        self.lift(&[a, b], |_, xy| {
+                            let y = if sub { neg(xy[1]) } else { xy[1] };
+                            if alone && sum_is_exact(xy[0], y) {
+                                add_exact(xy[0], y)
+                            } else {
+                                add_in(xy[0], y, span)
+                            }
+                        })
                     }
-                    (BinaryOperator::Multiply, Val::Num(x), Val::Num(y)) => {
-                        let p = mul(*x, *y);
-                        self.check_product_chain(fr, h, p);
-                        Val::Num(p)
+                    B::Multiply if scalar(&a) && scalar(&b) => {
+                        let p = self.lift(&[a, b], |_, xy| mul(xy[0], xy[1]));
+                        let hull = p.scalar().expect("a number");
+                        self.check_product_chain(fr, h, hull);
+                        p
                     }
-                    _ => self.binary(*op, a, b),
+                    B::Divide if (alt(&a) || alt(&b)) && scalar(&a) && scalar(&b) => {
+                        self.lift(&[a, b], |s, xy| s.div(xy[0], xy[1]))
+                    }
+                    _ => self.binary(*op, a.collapsed(), b.collapsed()),
                 }
             }
             Expression::Select {
@@ -326,10 +490,10 @@ impl<'m> Interp<'m> {
                     v: c.v,
                     e: c.e.max((o.v - c.v).abs() + o.e),
                 };
-                match (self.expr(fr, chosen), stable) {
+                match (self.expr(fr, chosen).collapsed(), stable) {
                     (c, true) => c,
                     (Val::Num(c), false) => Val::Num(union(c, self.num(fr, other))),
-                    (Val::Vec(c), false) => match self.expr(fr, other) {
+                    (Val::Vec(c), false) => match self.expr(fr, other).collapsed() {
                         Val::Vec(o) => {
                             Val::Vec(c.iter().zip(&o).map(|(&c, &o)| union(c, o)).collect())
                         }
@@ -345,17 +509,39 @@ impl<'m> Interp<'m> {
                 arg2,
                 ..
             } => {
-                let x = self.num(fr, *arg);
-                let y = arg1.map(|a| self.num(fr, a));
-                let z = arg2.map(|a| self.num(fr, a));
-                Val::Num(self.math(*fun, x, y, z))
+                let x = self.expr(fr, *arg);
+                match fun {
+                    MathFunction::Round => self.to_integer(x, f64::round_ties_even),
+                    MathFunction::Floor => self.to_integer(x, f64::floor),
+                    MathFunction::Fract => {
+                        // x - floor(x), the one difference alone.
+                        let fl = self.to_integer(x.clone(), f64::floor);
+                        self.lift(&[x, fl], |_, xf| {
+                            let y = neg(xf[1]);
+                            if sum_is_exact(xf[0], y) {
+                                add_exact(xf[0], y)
+                            } else {
+                                add_in(xf[0], y, xf[0].v.abs() + xf[0].e + xf[1].v.abs())
+                            }
+                        })
+                    }
+                    _ => {
+                        let mut vals = vec![x];
+                        vals.extend(arg1.map(|a| self.expr(fr, a)));
+                        vals.extend(arg2.map(|a| self.expr(fr, a)));
+                        let fun = *fun;
+                        self.lift(&vals, |s, n| {
+                            s.math(fun, n[0], n.get(1).copied(), n.get(2).copied())
+                        })
+                    }
+                }
             }
             other => panic!("{:?}: expression {other:?} is not modelled", fr.f.name),
         };
         // NaN fails the comparison too.
         let fits = |n: &Num| n.v.abs() + n.e <= MAX32;
-        if let Val::Num(n) = &v
-            && !fits(n)
+        if let Some(n) = v.scalar()
+            && !fits(&n)
         {
             self.exclude("a value may exceed the largest finite f32 (or is NaN)");
         }
@@ -462,16 +648,15 @@ impl<'m> Interp<'m> {
     /// The sum of the magnitudes (with their errors) of the leaves of the sum `h` heads: no
     /// partial sum of any reordering of the chain exceeds it, so each addition's rounding is
     /// charged in ULP of it.
-    fn sum_span(&mut self, fr: &mut Frame<'m>, h: Handle<Expression>) -> f64 {
+    fn sum_span(&mut self, fr: &mut Frame<'m>, h: Handle<Expression>) -> (f64, usize) {
         let mut leaves = Vec::new();
         Self::chain_leaves(fr, h, false, &mut leaves);
-        leaves
+        let n = leaves.len();
+        let span = leaves
             .into_iter()
-            .map(|l| match self.expr(fr, l) {
-                Val::Num(n) => n.v.abs() + n.e,
-                _ => 0.0,
-            })
-            .sum()
+            .map(|l| self.expr(fr, l).scalar().map_or(0.0, |n| n.v.abs() + n.e))
+            .sum();
+        (span, n)
     }
 
     /// Excludes the row where some reordering of the chain of products `h` heads (whose
@@ -484,8 +669,19 @@ impl<'m> Interp<'m> {
         Self::chain_leaves(fr, h, true, &mut leaves);
         let (mut big, mut small) = (1.0f64, 1.0f64);
         for l in leaves {
-            if let Val::Num(n) = self.expr(fr, l) {
-                let (lo, hi) = ((n.v.abs() - n.e).max(0.0), n.v.abs() + n.e);
+            // The magnitudes every alternative allows (their union may straddle 0 where
+            // none does: a sign +-1).
+            let alts = match self.expr(fr, l) {
+                Val::Num(n) => vec![n],
+                Val::Alt { alts, .. } => alts,
+                _ => Vec::new(),
+            };
+            if !alts.is_empty() {
+                let lo = alts
+                    .iter()
+                    .map(|n| (n.v.abs() - n.e).max(0.0))
+                    .fold(f64::INFINITY, f64::min);
+                let hi = alts.iter().map(|n| n.v.abs() + n.e).fold(0.0, f64::max);
                 big *= hi.max(1.0);
                 small *= lo.min(1.0);
             }
@@ -658,6 +854,8 @@ struct Frame<'m> {
     f: &'m Function,
     args: Vec<Val>,
     memo: Vec<Option<Val>>,
+    /// The function's index in the module (for [`Interp`]'s `in_sum`).
+    fidx: usize,
 }
 
 fn add(a: Num, b: Num) -> Num {
@@ -677,17 +875,63 @@ fn add_in(a: Num, b: Num, span: f64) -> Num {
     }
 }
 
+/// Whether a + b is exact for every pair of `f32` in the operands' intervals: one operand is
+/// exactly 0, or (Sterbenz's lemma) a + b = p - q with p, q of one sign and q / 2 <= p <= 2 q
+/// throughout.
+fn sum_is_exact(a: Num, b: Num) -> bool {
+    let zero = |n: Num| n.v == 0.0 && n.e == 0.0;
+    if zero(a) || zero(b) {
+        return true;
+    }
+    let (p, q) = if a.v < 0.0 { (neg(a), b) } else { (a, neg(b)) };
+    let (p_lo, p_hi, q_lo, q_hi) = (p.v - p.e, p.v + p.e, q.v - q.e, q.v + q.e);
+    p_lo > 0.0 && q_lo > 0.0 && q_hi <= 2.0 * p_lo && p_hi <= 2.0 * q_lo
+}
+
+/// a + b where [`sum_is_exact`]: the inherited errors, and half an ULP of the result for a
+/// contraction of an operand's product into an `fma` (which rounds once), unless both operands
+/// are exact (their product, fused or not, is then the exact value too).
+fn add_exact(a: Num, b: Num) -> Num {
+    let v = a.v + b.v;
+    let e = a.e + b.e;
+    // Exact operands: the sum is exact in f64 too (Sterbenz holds in any binary format).
+    let own = if e == 0.0 {
+        flush(v, e)
+    } else {
+        allow(v, e, EXTRA)
+    };
+    Num { v, e: e + own }
+}
+
+/// 2^-126 where a result near `v` (inherited error `e`) may be subnormal and flushed to 0.
+fn flush(v: f64, e: f64) -> f64 {
+    if v.abs() - e < TINY && v.abs() + e > 0.0 {
+        TINY
+    } else {
+        0.0
+    }
+}
+
 fn neg(a: Num) -> Num {
     Num { v: -a.v, e: a.e }
+}
+
+/// Whether `n` is exactly a power of two (an exact operand whose product is exact).
+fn power_of_two(n: Num) -> bool {
+    let m = n.v.abs();
+    n.e == 0.0 && m.is_normal() && m.to_bits() & ((1u64 << 52) - 1) == 0
 }
 
 fn mul(a: Num, b: Num) -> Num {
     let v = a.v * b.v;
     let e = a.v.abs() * b.e + b.v.abs() * a.e + a.e * b.e;
-    Num {
-        v,
-        e: e + allow(v, e, 0.5 + EXTRA),
-    }
+    // A product by 2^k is exact (in f64 too) but where it is subnormal.
+    let own = if power_of_two(a) || power_of_two(b) {
+        flush(v, e)
+    } else {
+        allow(v, e, 0.5 + EXTRA)
+    };
+    Num { v, e: e + own }
 }
 
 #[cfg(test)]
@@ -741,5 +985,61 @@ mod tests {
             r[0].e / ulp
         );
         assert!(i.run("f", &[1.5]).is_err());
+    }
+
+    /// cos(pi u) and sin(pi u), u = a b, reduced as wgsl/iridescence.wgsl reduces them.
+    const HALF_TURNS: &str = "fn f(a: f32, b: f32) -> vec2<f32> {
+        let u = a * b;
+        let n = round(u);
+        let s = u - n;
+        let h = 0.5 * n;
+        let sign = 1.0 - 4.0 * (h - floor(h));
+        let x = 3.14159265358979 * s;
+        return vec2<f32>(sign * cos(x), sign * sin(x));
+    }";
+
+    #[test]
+    fn a_reduced_phase_keeps_cos_and_sin_bounded_across_a_half_turn() {
+        let m = module(HALF_TURNS);
+        let mut i = Interp::new(&m);
+        // u = 1001 / 2 within its rounding: n may be 500 or 501 on a GPU, s +-1/2 and the sign
+        // with it; each choice keeps its argument in [-pi/2, pi/2].
+        let a = f64::from(1001.0f32 / 3.0);
+        for (a, b) in [(a, 1.5), (1.0 / 3.0, 1.5), (1234.567, 2.0)] {
+            let r = i.run("f", &[a, b]).expect("inside WGSL's promises");
+            let u = a * b;
+            let (c, s) = (
+                (std::f64::consts::PI * u).cos(),
+                (std::f64::consts::PI * u).sin(),
+            );
+            // pi rounded to f32 moves the form by up to 4.4e-8.
+            assert!(
+                (r[0].v - c).abs() < 1e-7 && (r[1].v - s).abs() < 1e-7,
+                "{r:?}"
+            );
+            // 2^-11 for cos and sin, and pi times u's own error (a few ULP of u), no more:
+            // the sign stays paired with its n (uncorrelated, sin's bound would be 2).
+            let own = f64::powi(2.0, -11) + 4.0 * std::f64::consts::PI * 2.0 * ulp32(u);
+            assert!(r[0].e < own && r[1].e < own, "{} {} {own}", r[0].e, r[1].e);
+        }
+    }
+
+    #[test]
+    fn an_unreduced_phase_is_excluded() {
+        let m = module("fn f(x: f32) -> f32 { return cos(x); }");
+        let mut i = Interp::new(&m);
+        assert!(i.run("f", &[3.0]).is_ok());
+        assert!(i.run("f", &[1000.0]).is_err());
+    }
+
+    #[test]
+    fn products_by_powers_of_two_and_sterbenz_differences_are_exact() {
+        let m = module("fn f(x: f32, y: f32) -> f32 { return 0.5 * x - y; }");
+        let mut i = Interp::new(&m);
+        // 0.5 * 3 = 1.5 exactly, 1.5 - 1 exactly (Sterbenz).
+        let r = i.run("f", &[3.0, 1.0]).unwrap();
+        assert_eq!((r[0].v, r[0].e), (0.5, 0.0));
+        // 1.5 - 0.1: not within a factor of 2, rounded.
+        assert!(i.run("f", &[3.0, 0.1]).unwrap()[0].e > 0.0);
     }
 }

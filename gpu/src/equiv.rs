@@ -85,11 +85,62 @@ impl Figures {
     }
 }
 
-/// The rows of a kernel: extremes, random rows, random rows with cosines near 0 and 1, all
-/// in `f32`.
+/// Grids of stability cases, by family (a kernel path's prefix) and argument name: every
+/// combination of the listed values is a row. The thin film: thickness 0 (the bare base),
+/// inside the 30 nm blend and at its maximum; a film index equal to the outside index (no top
+/// interface) and at its maximum; a base index equal to the film's or the outside's, and below
+/// them (total reflection inside the film); a conductor's k from 0 to 1e30; normal and grazing
+/// incidence.
+pub const GRIDS: &[(&str, &[(&str, &[f64])])] = &[(
+    "iridescence::",
+    &[
+        ("thickness", &[0.0, 1e-3, 29.9, 30.0, 300.0, 10_000.0]),
+        ("ior", &[1.0, 1.33, 2.5, 10.0]),
+        ("outside_ior", &[1.0, 1.33, 2.5]),
+        ("base_ior", &[1.0, 1.33, 1.5, 0.3]),
+        ("base_eta", &[1.0, 0.2, 1.5]),
+        ("base_k", &[0.0, 3.0, 1e3, 1e30]),
+        ("cos_theta", &[0.0, 1e-4, 0.5, 0.999_999_94, 1.0]),
+    ],
+)];
+
+/// The rows of [`GRIDS`] for `k` (none where no grid names its family), in `f32`.
+///
+/// # Panics
+/// If a grid lacks one of the kernel's arguments.
+#[must_use]
+pub fn grid_rows(k: &brdf_ref::Kernel) -> Vec<Vec<f64>> {
+    let Some((_, grid)) = GRIDS.iter().find(|(p, _)| k.path.starts_with(p)) else {
+        return Vec::new();
+    };
+    let mut rows = vec![Vec::new()];
+    for a in k.args {
+        let (_, values) = grid
+            .iter()
+            .find(|(n, _)| *n == a.name)
+            .unwrap_or_else(|| panic!("{}: the grid has no {}", k.path, a.name));
+        rows = rows
+            .into_iter()
+            .flat_map(|r| {
+                values.iter().map(move |&x| {
+                    let mut r = r.clone();
+                    #[allow(clippy::cast_possible_truncation)]
+                    r.push(f64::from(x as f32));
+                    r
+                })
+            })
+            .collect();
+    }
+    rows.retain(|r| k.broken_constraint(r, Float::F32).is_none());
+    rows
+}
+
+/// The rows of a kernel: extremes, random rows, random rows with cosines near 0 and 1, its
+/// family's grid of stability cases ([`GRIDS`]), all in `f32`.
 #[must_use]
 pub fn rows(k: &brdf_ref::Kernel) -> Vec<Vec<f64>> {
     let mut rows = extreme_rows(k, Float::F32, EXTREME_ROWS);
+    rows.extend(grid_rows(k));
     rows.extend(random_rows(k, Float::F32, RANDOM_ROWS, 1));
     let near = |j: u32, up: bool| {
         let t = f64::powi(2.0, -i32::try_from(j).expect("small"));
@@ -288,7 +339,8 @@ pub fn markdown(adapter: &str, figs: &[Figures], without: &[&str]) -> String {
     let mut s = format!(
         "# WGSL twins against the CPU\n\nAdapter: {adapter}\n\nDate: {date} (UTC); \
          `brdf-gpu-equiv`, rows per kernel: its argument extremes (up to {EXTREME_ROWS}), \
-         {RANDOM_ROWS} random rows and up to {NEAR_END_ROWS} rows with cosines near 0 and 1.\n\n\
+         {RANDOM_ROWS} random rows, up to {NEAR_END_ROWS} rows with cosines near 0 and 1, and the \
+         thin film's grid of stability cases (`GRIDS`).\n\n\
          Each value g is held to |g - c32| <= B + |X - c32|: B the bound the WGSL accuracy \
          table gives the twin's form at that input, X the form's exact value, c32 the CPU's \
          f32 result; bounds in ULP of c32. \"max ULP, normal\" is the largest distance over \

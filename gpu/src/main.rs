@@ -1,4 +1,5 @@
-//! `brdf-gpu-equiv [--out DIR]`: every WGSL twin on the adapter wgpu finds, against the CPU;
+//! `brdf-gpu-equiv [--out DIR] [--only PREFIX]`: every WGSL twin (or those whose kernel path
+//! starts with PREFIX) on the adapter wgpu finds, against the CPU;
 //! prints the adapter and the per-kernel table, writes `gpu-equivalence.md` and
 //! `gpu-equivalence.csv` into DIR (default `out/gpu`). Exit status 1 when a value leaves its
 //! bound, 2 when no adapter exists. Needs at run time only a Vulkan loader
@@ -12,6 +13,7 @@ use std::process::ExitCode;
 
 fn main() -> ExitCode {
     let mut out = PathBuf::from("out/gpu");
+    let mut only = String::new();
     let mut args = std::env::args().skip(1);
     while let Some(a) = args.next() {
         match a.as_str() {
@@ -22,8 +24,17 @@ fn main() -> ExitCode {
                     return ExitCode::from(2);
                 }
             },
+            "--only" => match args.next() {
+                Some(p) => only = p,
+                None => {
+                    eprintln!("--only needs a kernel path prefix");
+                    return ExitCode::from(2);
+                }
+            },
             "-h" | "--help" => {
-                println!("brdf-gpu-equiv [--out DIR]: the WGSL twins on this machine's GPU");
+                println!(
+                    "brdf-gpu-equiv [--out DIR] [--only PREFIX]: the WGSL twins on this machine's GPU"
+                );
                 return ExitCode::SUCCESS;
             }
             other => {
@@ -43,7 +54,7 @@ fn main() -> ExitCode {
     let fams = families();
     let (with, without) = twins(&fams);
     let mut figs = Vec::new();
-    for t in &with {
+    for t in with.iter().filter(|t| t.kernel.path.starts_with(&only)) {
         let f = run_kernel(&gpu, t, &fams, &rows(t.kernel));
         println!(
             "{:40} max {:>6} ULP ({:>6} on normal numbers)  identical {:>6.2}%  max/bound {:.3}  \

@@ -445,13 +445,6 @@ pub const NO_TWIN: &[(&str, &str)] = &[
         "rough_dielectric::beckmann_sample",
         "a sampler: the samplers have no twins yet",
     ),
-    (
-        "iridescence::",
-        "no spec-derived bound without range reduction: the Airy sum's phases (x-bar's \
-         position 1.68e6 / m times 2 pi times the optical path difference) reach thousands of \
-         radians, where WGSL promises nothing for cos (its accuracy is stated on [-pi, pi] \
-         only)",
-    ),
 ];
 
 /// Why `path` has no WGSL twin, from [`NO_TWIN`].
