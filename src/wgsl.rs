@@ -18,8 +18,9 @@
 //! [`DIFFUSE`] needs [`FRESNEL`], [`MATERIAL`] needs [`GGX`], [`FRESNEL`], [`BECKMANN`] and
 //! [`COOK_TORRANCE`], [`SAMPLING`] needs [`GGX`] and [`BECKMANN`], [`LAYERS`] needs [`GGX`]
 //! and [`FRESNEL`], [`ROUGH_DIELECTRIC`] needs [`GGX`], [`FRESNEL`] and [`BECKMANN`],
-//! [`TRANSMISSION`] needs those and [`ROUGH_DIELECTRIC`]). No family defines a name another family
-//! defines, so any such subset concatenated after [`COMMON`] is one valid WGSL module:
+//! [`TRANSMISSION`] needs those and [`ROUGH_DIELECTRIC`]; [`IRIDESCENCE`] needs only
+//! [`COMMON`]). No family defines a name another family defines, so any such subset
+//! concatenated after [`COMMON`] is one valid WGSL module:
 //!
 //! ```
 //! let source = [brdf::wgsl::COMMON, brdf::wgsl::GGX, brdf::wgsl::FRESNEL].concat();

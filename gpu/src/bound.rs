@@ -345,7 +345,7 @@ impl<'m> Interp<'m> {
     /// `round` or `floor` (`f`) of `x`: exact; where x's interval holds the rounding ranges of
     /// up to four integers, each is an alternative (the form's value first); beyond that, their
     /// union.
-    fn to_integer(&mut self, x: Val, f: fn(f64) -> f64) -> Val {
+    fn integer_of(&mut self, x: Val, f: fn(f64) -> f64) -> Val {
         if let Val::Alt { src, alts } = &x
             && alts.iter().all(|a| f(a.v - a.e) == f(a.v + a.e))
         {
@@ -511,11 +511,11 @@ impl<'m> Interp<'m> {
             } => {
                 let x = self.expr(fr, *arg);
                 match fun {
-                    MathFunction::Round => self.to_integer(x, f64::round_ties_even),
-                    MathFunction::Floor => self.to_integer(x, f64::floor),
+                    MathFunction::Round => self.integer_of(x, f64::round_ties_even),
+                    MathFunction::Floor => self.integer_of(x, f64::floor),
                     MathFunction::Fract => {
                         // x - floor(x), the one difference alone.
-                        let fl = self.to_integer(x.clone(), f64::floor);
+                        let fl = self.integer_of(x.clone(), f64::floor);
                         self.lift(&[x, fl], |_, xf| {
                             let y = neg(xf[1]);
                             if sum_is_exact(xf[0], y) {

@@ -85,13 +85,16 @@ impl Figures {
     }
 }
 
+/// A grid: the values of each argument, by name.
+pub type Grid = &'static [(&'static str, &'static [f64])];
+
 /// Grids of stability cases, by family (a kernel path's prefix) and argument name: every
 /// combination of the listed values is a row. The thin film: thickness 0 (the bare base),
 /// inside the 30 nm blend and at its maximum; a film index equal to the outside index (no top
 /// interface) and at its maximum; a base index equal to the film's or the outside's, and below
 /// them (total reflection inside the film); a conductor's k from 0 to 1e30; normal and grazing
 /// incidence.
-pub const GRIDS: &[(&str, &[(&str, &[f64])])] = &[(
+pub const GRIDS: &[(&str, Grid)] = &[(
     "iridescence::",
     &[
         ("thickness", &[0.0, 1e-3, 29.9, 30.0, 300.0, 10_000.0]),

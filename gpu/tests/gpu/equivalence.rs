@@ -5,7 +5,7 @@
 //! unless `BRDF_GPU_ALLOW_NO_ADAPTER=1`.
 
 use brdf_gpu::device::Gpu;
-use brdf_gpu::equiv::{cpu_row, rows, run_kernel};
+use brdf_gpu::equiv::{cpu_row, grid_rows, rows, run_kernel};
 use brdf_gpu::shaders::{families, twins};
 
 fn gpu() -> Option<Gpu> {
@@ -67,6 +67,46 @@ fn a_twin_with_another_formula_is_caught_on_the_cpu() {
     let row = [0.5, 0.25];
     let cpu = cpu_row(t, &mut interp, &row).expect("compared");
     assert!((cpu.form[0].v - cpu.c64[0]).abs() > cpu.form[0].e);
+}
+
+#[test]
+fn a_thin_film_without_the_bases_phase_shift_is_caught_on_the_cpu() {
+    // iridescence_conductor with the film -> base coefficient r23 replaced by its modulus (the
+    // phase shift a metal gives the reflected wave dropped): over the thin film's grid of
+    // stability cases, the form's exact value leaves the Rust kernel's by more than its bound
+    // on many rows, before any GPU runs.
+    let mut fams = families();
+    let fam = fams
+        .iter()
+        .position(|f| f.name == "iridescence")
+        .expect("iridescence family");
+    let broken = fams[fam]
+        .source
+        .replace("vec2<f32>(r23.y, r23.z)", "vec2<f32>(sqrt(r23.x), 0.0)");
+    assert_ne!(
+        broken, fams[fam].source,
+        "the form to break is in iridescence.wgsl"
+    );
+    fams[fam].module = naga::front::wgsl::parse_str(&broken).expect("parses");
+    let (with, _) = twins(&fams);
+    let t = with
+        .iter()
+        .find(|t| t.name == "iridescence_conductor")
+        .expect("iridescence_conductor");
+    let mut interp = brdf_gpu::bound::Interp::new(&fams[fam].module);
+    let (mut compared, mut caught) = (0, 0);
+    for row in grid_rows(t.kernel) {
+        if let Ok(cpu) = cpu_row(t, &mut interp, &row) {
+            compared += 1;
+            if (0..3).any(|o| (cpu.form[o].v - cpu.c64[o]).abs() > cpu.form[o].e) {
+                caught += 1;
+            }
+        }
+    }
+    println!("{caught} of {compared} rows caught");
+    // A tenth: the grid's thick films, grazing rows and bases matching the film carry no
+    // interference, so no phase to drop.
+    assert!(caught * 10 > compared, "{caught} of {compared}");
 }
 
 #[test]
