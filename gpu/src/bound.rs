@@ -48,9 +48,9 @@
 //! exactly where the reduced form is periodic: for `cos(pi u) = (-1)^n cos(pi (u - n))` the
 //! choices n and n + 1 at u = n + 1/2 give values within the errors of each other, and the
 //! argument pi (u - n) stays in [-pi/2, pi/2] for each, where cos and sin keep their promise.
-//! Without the alternatives, the union of u - n over both choices would span [-1/2, 3/2] and
-//! leave [-pi, pi]. Every alternative of a computed value is a value some conforming
-//! implementation may compute, so the bound stays sound.
+//! Without the alternatives, the union of u - n over both choices, centred on the form's
+//! value 1/2, would span [-1/2, 3/2] and leave [-pi, pi]. Whatever value a conforming
+//! implementation computes lies in one alternative's interval, so the bound stays sound.
 //!
 //! A comparison whose operands lie within their errors of each other may go either way on a
 //! GPU: a `select` on it takes the union of both operands' intervals. Where WGSL promises
