@@ -831,8 +831,8 @@ pub fn conductor_fast<T: Real>(cos_theta_i: T, eta: T, k: T) -> T {
 
 /// The part of [`conductor_fast`] that depends on eta and k alone (a loop over cosines with
 /// fixed eta and k computes it once), and the rest as [`ConductorFast::at`], which
-/// `cook_torrance::ggx_conductor_local_fast` calls with the squared cosine from the half
-/// vector's length.
+/// `cook_torrance::ggx_conductor_local_fast` calls with the squared cosine (wo.s)^2 / |s|^2
+/// of the unnormalized half vector s.
 #[derive(Clone, Copy)]
 pub(crate) struct ConductorFast<T: Real> {
     ok: T::Mask,
@@ -841,7 +841,7 @@ pub(crate) struct ConductorFast<T: Real> {
     sigma: T,
     neg_m2: T,
     /// Re(N^2) in units of m^2.
-    pub(crate) n2_re: T,
+    n2_re: T,
     /// Re(N^2 - m^2) in units of m^2.
     pub(crate) u_re: T,
     ul_abs2: T,
