@@ -480,7 +480,7 @@ fn local_dv<T: Real>(
 /// and Re(s^2) = Re(N^2) - 1 + c^2 (N scaled as there) from one reciprocal of |s|^2, and
 /// v.h = wo.s sqrt(1 / |s|^2) only where F reads c itself, after its two square roots. The
 /// roots then wait for one division instead of a square root and a division (on a Zen 4
-/// core, about a sixth less time per `f32x8`: `bench/mitsuba/compare.py`, its README). Unlike
+/// core, about a fifth less time per `f32x8`: `bench/mitsuba/compare.py`, its README). Unlike
 /// [`fresnel::conductor_fast`], Re(s^2) takes that one form at every angle, which loses a few
 /// digits more where it cancels (small |N| near normal incidence).
 ///
