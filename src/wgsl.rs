@@ -58,7 +58,8 @@ pub const FRAME: &str = include_str!("../wgsl/frame.wgsl");
 pub const GGX: &str = include_str!("../wgsl/ggx.wgsl");
 
 /// The twins of `brdf::fresnel`'s Schlick family (plain, F90, spherical Gaussian, F82 tint,
-/// RGB forms), the exact dielectric reflectance (polarized and not), the exact conductor
+/// RGB forms), the exact dielectric reflectance (polarized and not, and
+/// `fresnel_dielectric_fast`, the twin of its working-precision form), the exact conductor
 /// reflectance of a complex IOR (and its RGB form), F0 and IOR conversions and the dielectric
 /// average's fit.
 pub const FRESNEL: &str = include_str!("../wgsl/fresnel.wgsl");

@@ -359,16 +359,6 @@ pub const NO_TWIN: &[(&str, &str)] = &[
         "a tangent frame of its normal: shaders build theirs from the mesh's tangents",
     ),
     (
-        "cook_torrance::ggx_dielectric_fast",
-        "not written yet: composes fresnel::dielectric_fast, which has no twin yet \
-         (cook_torrance_ggx_dielectric is already a working-precision shader form)",
-    ),
-    (
-        "fresnel::dielectric_fast",
-        "not written yet: fresnel_dielectric (the twin of fresnel::dielectric) is already this \
-         working-precision form, without its cancellation-free g2 and W near c = 1",
-    ),
-    (
         "fresnel::average_dielectric",
         "a numerical integral evaluated in f64 only; fresnel_average_dielectric_fit is its \
          shader form",
