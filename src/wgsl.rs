@@ -17,8 +17,8 @@
 //! ([`Family::needs`]: [`COOK_TORRANCE`] needs [`GGX`], [`FRESNEL`] and [`BECKMANN`],
 //! [`DIFFUSE`] needs [`FRESNEL`], [`MATERIAL`] needs [`GGX`], [`FRESNEL`], [`BECKMANN`] and
 //! [`COOK_TORRANCE`], [`SAMPLING`] needs [`GGX`] and [`BECKMANN`], [`LAYERS`] needs [`GGX`]
-//! and [`FRESNEL`], [`ROUGH_DIELECTRIC`] needs [`GGX`], [`FRESNEL`] and [`BECKMANN`],
-//! [`TRANSMISSION`] needs those and [`ROUGH_DIELECTRIC`]). No family defines a name another family
+//! and [`FRESNEL`], [`ROUGH_DIELECTRIC`] needs [`GGX`], [`FRESNEL`], [`BECKMANN`] and
+//! [`SAMPLING`], [`TRANSMISSION`] needs those and [`ROUGH_DIELECTRIC`]). No family defines a name another family
 //! defines, so any such subset concatenated after [`COMMON`] is one valid WGSL module:
 //!
 //! ```
@@ -130,14 +130,15 @@ pub const LAYERS: &str = include_str!("../wgsl/layers.wgsl");
 
 /// The twins of `brdf::rough_dielectric`'s generalized half vector, BSDF
 /// (`rough_dielectric_eval`, the model a `u32`: 0 = GGX, 1 = Beckmann; the transport a `u32`:
-/// 0 = radiance, 1 = importance) and pdf of both lobes (the samplers have no twins yet). Needs
-/// [`GGX`], [`FRESNEL`] and [`BECKMANN`] before it.
+/// 0 = radiance, 1 = importance), pdf of both lobes and GGX sampler
+/// (`rough_dielectric_ggx_sample`; the Beckmann sampler, which needs erf_inv, has no twin).
+/// Needs [`GGX`], [`FRESNEL`], [`BECKMANN`] and [`SAMPLING`] before it.
 pub const ROUGH_DIELECTRIC: &str = include_str!("../wgsl/rough_dielectric.wgsl");
 
 /// The twins of `brdf::transmission::Volume`'s Beer-Lambert transmittance and attenuation
 /// coefficient (`transmission_Volume_transmittance`, taking the constructor's thickness,
 /// attenuation colour and distance first), and of `transmission::thin_walled_btdf` and
-/// `transmission::dielectric_bsdf`. Needs [`GGX`], [`FRESNEL`], [`BECKMANN`] and
+/// `transmission::dielectric_bsdf`. Needs [`GGX`], [`FRESNEL`], [`BECKMANN`], [`SAMPLING`] and
 /// [`ROUGH_DIELECTRIC`] before it.
 pub const TRANSMISSION: &str = include_str!("../wgsl/transmission.wgsl");
 
@@ -244,11 +245,11 @@ pub const FAMILIES: &[Family] = &[
     Family {
         name: "rough_dielectric",
         source: ROUGH_DIELECTRIC,
-        needs: &["ggx", "fresnel", "beckmann"],
+        needs: &["ggx", "fresnel", "beckmann", "sampling"],
     },
     Family {
         name: "transmission",
         source: TRANSMISSION,
-        needs: &["ggx", "fresnel", "beckmann", "rough_dielectric"],
+        needs: &["ggx", "fresnel", "beckmann", "sampling", "rough_dielectric"],
     },
 ];

@@ -106,20 +106,29 @@ fn sampling_ggx_vndf(
     return vec4<f32>(m, pdf);
 }
 
+// The normal of sampling_ggx_vndf_spherical_cap without its pdf (for the samplers that weigh
+// their sample by another density).
+fn brdf_ggx_vndf_spherical_cap_normal(
+    alpha_x: f32, alpha_y: f32, wo: vec3<f32>, u1: f32, u2: f32,
+) -> vec3<f32> {
+    let ax = brdf_clamp_alpha(alpha_x);
+    let ay = brdf_clamp_alpha(alpha_y);
+    let v = brdf_stretch(wo, ax, ay);
+    let cs = brdf_cos_sin_2pi(brdf_clamp_u(u1));
+    let z = fma(1.0 - brdf_clamp_u(u2), 1.0 + v.z, -v.z);
+    let sin_theta = sqrt(max(1.0 - z * z, 0.0));
+    let h = vec3<f32>(sin_theta * cs.x + v.x, sin_theta * cs.y + v.y, z + v.z);
+    return brdf_unstretch(h, ax, ay);
+}
+
 // GGX visible-normal sampling by spherical caps (Dupuy and Benyoub 2023, "Sampling Visible GGX
 // Normals with Spherical Caps"): a uniform direction on the cap z >= -v.z around the
 // stretched view, plus the view, unstretched; with its pdf D_wo(m).
 fn sampling_ggx_vndf_spherical_cap(
     alpha_x: f32, alpha_y: f32, wo_x: f32, wo_y: f32, wo_z: f32, u1: f32, u2: f32,
 ) -> vec4<f32> {
-    let ax = brdf_clamp_alpha(alpha_x);
-    let ay = brdf_clamp_alpha(alpha_y);
-    let v = brdf_stretch(vec3<f32>(wo_x, wo_y, wo_z), ax, ay);
-    let cs = brdf_cos_sin_2pi(brdf_clamp_u(u1));
-    let z = fma(1.0 - brdf_clamp_u(u2), 1.0 + v.z, -v.z);
-    let sin_theta = sqrt(max(1.0 - z * z, 0.0));
-    let h = vec3<f32>(sin_theta * cs.x + v.x, sin_theta * cs.y + v.y, z + v.z);
-    let m = brdf_unstretch(h, ax, ay);
+    let m = brdf_ggx_vndf_spherical_cap_normal(alpha_x, alpha_y, vec3<f32>(wo_x, wo_y, wo_z),
+        u1, u2);
     let pdf = ggx_Ggx_d_visible(alpha_x, alpha_y, wo_x, wo_y, abs(wo_z), m.x, m.y, m.z);
     return vec4<f32>(m, pdf);
 }

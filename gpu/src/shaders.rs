@@ -428,12 +428,9 @@ pub const NO_TWIN: &[(&str, &str)] = &[
          them itself from its own material inputs",
     ),
     (
-        "rough_dielectric::ggx_sample",
-        "a sampler: the samplers have no twins yet",
-    ),
-    (
         "rough_dielectric::beckmann_sample",
-        "a sampler: the samplers have no twins yet",
+        "draws its facet normal with sampling::beckmann_vndf, whose erf_inv (a Newton \
+         polish) has no twin",
     ),
     (
         "iridescence::",
