@@ -15,11 +15,12 @@
 //! # Composing
 //! [`COMMON`] must come first, then each family after the families it calls into
 //! ([`Family::needs`]: [`COOK_TORRANCE`] needs [`GGX`], [`FRESNEL`] and [`BECKMANN`],
-//! [`DIFFUSE`] needs [`FRESNEL`], [`MATERIAL`] needs [`GGX`], [`FRESNEL`], [`BECKMANN`] and
-//! [`COOK_TORRANCE`], [`SAMPLING`] needs [`GGX`] and [`BECKMANN`], [`LAYERS`] needs [`GGX`]
-//! and [`FRESNEL`], [`ROUGH_DIELECTRIC`] needs [`GGX`], [`FRESNEL`], [`BECKMANN`] and
-//! [`SAMPLING`], [`TRANSMISSION`] needs those and [`ROUGH_DIELECTRIC`]). No family defines a name another family
-//! defines, so any such subset concatenated after [`COMMON`] is one valid WGSL module:
+//! [`DIFFUSE`] needs [`FRESNEL`], [`MATERIAL`] needs [`GGX`], [`FRESNEL`], [`BECKMANN`],
+//! [`COOK_TORRANCE`] and [`SAMPLING`], [`SAMPLING`] needs [`GGX`] and [`BECKMANN`], [`LAYERS`]
+//! needs [`GGX`] and [`FRESNEL`], [`ROUGH_DIELECTRIC`] needs [`GGX`], [`FRESNEL`], [`BECKMANN`]
+//! and [`SAMPLING`], [`TRANSMISSION`] needs those and [`ROUGH_DIELECTRIC`]). No family defines
+//! a name another family defines, so any such subset concatenated after [`COMMON`] is one valid
+//! WGSL module:
 //!
 //! ```
 //! let source = [brdf::wgsl::COMMON, brdf::wgsl::GGX, brdf::wgsl::FRESNEL].concat();
@@ -105,8 +106,9 @@ pub const TONEMAP: &str = include_str!("../wgsl/tonemap.wgsl");
 
 /// The twins of `brdf::material`'s F0 from reflectance, the metallic-roughness BRDF from dot
 /// products (its three diffuse couplings, and glTF's composition; precise and fast tiers), and
-/// `material::MetallicRoughness`'s `eval`, `eval_fast` and `specular_probability` on local
-/// directions. Needs [`GGX`], [`FRESNEL`], [`BECKMANN`] and [`COOK_TORRANCE`] before it.
+/// `material::MetallicRoughness`'s `eval`, `eval_fast`, `specular_probability`, `sample`,
+/// `sample_weighted` and `pdf` on local directions. Needs [`GGX`], [`FRESNEL`], [`BECKMANN`],
+/// [`COOK_TORRANCE`] and [`SAMPLING`] before it.
 pub const MATERIAL: &str = include_str!("../wgsl/material.wgsl");
 
 /// The twins of `brdf::ibl::dfg`'s per-pixel terms: the analytic split-sum fits (Karis mobile,
@@ -155,9 +157,9 @@ pub const ALL: &str = concat!(
     include_str!("../wgsl/phong.wgsl"),
     include_str!("../wgsl/lights.wgsl"),
     include_str!("../wgsl/tonemap.wgsl"),
-    include_str!("../wgsl/material.wgsl"),
     include_str!("../wgsl/ibl.wgsl"),
     include_str!("../wgsl/sampling.wgsl"),
+    include_str!("../wgsl/material.wgsl"),
     include_str!("../wgsl/layers.wgsl"),
     include_str!("../wgsl/rough_dielectric.wgsl"),
     include_str!("../wgsl/transmission.wgsl"),
@@ -223,11 +225,6 @@ pub const FAMILIES: &[Family] = &[
         needs: &[],
     },
     Family {
-        name: "material",
-        source: MATERIAL,
-        needs: &["ggx", "fresnel", "beckmann", "cook_torrance"],
-    },
-    Family {
         name: "ibl",
         source: IBL,
         needs: &[],
@@ -236,6 +233,11 @@ pub const FAMILIES: &[Family] = &[
         name: "sampling",
         source: SAMPLING,
         needs: &["ggx", "beckmann"],
+    },
+    Family {
+        name: "material",
+        source: MATERIAL,
+        needs: &["ggx", "fresnel", "beckmann", "cook_torrance", "sampling"],
     },
     Family {
         name: "layers",

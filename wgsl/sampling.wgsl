@@ -84,9 +84,17 @@ fn brdf_unstretch(h: vec3<f32>, ax: f32, ay: f32) -> vec3<f32> {
 fn sampling_ggx_vndf(
     alpha_x: f32, alpha_y: f32, wo_x: f32, wo_y: f32, wo_z: f32, u1: f32, u2: f32,
 ) -> vec4<f32> {
+    let m = brdf_ggx_vndf_normal(alpha_x, alpha_y, vec3<f32>(wo_x, wo_y, wo_z), u1, u2);
+    let pdf = ggx_Ggx_d_visible(alpha_x, alpha_y, wo_x, wo_y, abs(wo_z), m.x, m.y, m.z);
+    return vec4<f32>(m, pdf);
+}
+
+// The normal of sampling_ggx_vndf without its pdf (for the samplers that weigh their sample by
+// another density).
+fn brdf_ggx_vndf_normal(alpha_x: f32, alpha_y: f32, wo: vec3<f32>, u1: f32, u2: f32) -> vec3<f32> {
     let ax = brdf_clamp_alpha(alpha_x);
     let ay = brdf_clamp_alpha(alpha_y);
-    let vh = brdf_stretch(vec3<f32>(wo_x, wo_y, wo_z), ax, ay);
+    let vh = brdf_stretch(wo, ax, ay);
     let len2 = fma(vh.x, vh.x, vh.y * vh.y);
     let has_tangent = len2 > 0.0;
     let inv_len = select(0.0, 1.0 / sqrt(len2), has_tangent);
@@ -101,9 +109,7 @@ fn sampling_ggx_vndf(
     let lift = sqrt(max(1.0 - p1 * p1 - p2 * p2, 0.0));
     let nh = vec3<f32>(t1.x * p1 + t2.x * p2 + vh.x * lift, t1.y * p1 + t2.y * p2 + vh.y * lift,
         t1.z * p1 + t2.z * p2 + vh.z * lift);
-    let m = brdf_unstretch(nh, ax, ay);
-    let pdf = ggx_Ggx_d_visible(alpha_x, alpha_y, wo_x, wo_y, abs(wo_z), m.x, m.y, m.z);
-    return vec4<f32>(m, pdf);
+    return brdf_unstretch(nh, ax, ay);
 }
 
 // The normal of sampling_ggx_vndf_spherical_cap without its pdf (for the samplers that weigh

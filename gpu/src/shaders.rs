@@ -386,18 +386,6 @@ pub const NO_TWIN: &[(&str, &str)] = &[
     ),
     ("diffuse::Eon::pdf", "a sampler's pdf: with the samplers"),
     (
-        "material::MetallicRoughness::pdf",
-        "a sampler's pdf: with the samplers",
-    ),
-    (
-        "material::MetallicRoughness::sample",
-        "a sampler: the samplers have no twins yet",
-    ),
-    (
-        "material::MetallicRoughness::sample_weighted",
-        "a sampler: the samplers have no twins yet",
-    ),
-    (
         "sampling::",
         "not written yet: the Beckmann samplers (beckmann_vndf, beckmann_d_cos and \
          beckmann_reflection need erf_inv, which has no twin; the cosine-hemisphere, GGX D cos, \
