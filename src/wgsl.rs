@@ -44,7 +44,7 @@
 //! by input, to an error bound derived from the accuracy table of that same section.
 
 /// Constants and helpers every family uses (pi, the largest finite `f32`, the alpha clamps,
-/// 1 - c^2 without cancellation), and the twins of `brdf::microfacet`'s roughness conversions.
+/// 1 - c^2 without cancellation, the samplers' clamp of u and azimuth), and the twins of `brdf::microfacet`'s roughness conversions.
 /// Include it once, first.
 pub const COMMON: &str = include_str!("../wgsl/common.wgsl");
 
@@ -80,7 +80,8 @@ pub const BECKMANN: &str = include_str!("../wgsl/beckmann.wgsl");
 pub const COOK_TORRANCE: &str = include_str!("../wgsl/cook_torrance.wgsl");
 
 /// The twins of `brdf::diffuse`'s Lambert, qualitative and Fujii Oren-Nayar (with its A and
-/// B), EON (exact and fitted, with its directional and average albedos), Burley and
+/// B), EON (exact and fitted, with its directional and average albedos, its CLTC and mixture
+/// samplers and their pdfs), Burley and
 /// renormalized Burley lobes, the diffuse-Fresnel couplings, and the parameter types' `eval`
 /// on local directions (`diffuse_Burley_eval`, `diffuse_Eon_albedo`, ...). Needs [`FRESNEL`]
 /// before it.

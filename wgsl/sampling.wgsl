@@ -5,9 +5,7 @@
 // common.wgsl, ggx.wgsl and beckmann.wgsl. The Beckmann samplers (which need erf_inv) have no
 // twin yet.
 //
-// Angles: WGSL promises sin and cos only on [-pi, pi] (absolute error 2^-11 there), so
-// cos(2 pi u) and sin(2 pi u) are taken as -cos(t) and -sin(t) with t = (2 u - 1) pi', pi' the
-// f32 just below pi, which keeps |t| <= pi.
+// Angles: cos(2 pi u) and sin(2 pi u) through brdf_cos_sin_2pi (common.wgsl).
 
 // The pdf max(0, w.z) / pi of cosine-weighted hemisphere sampling (Pharr, Jakob, Humphreys,
 // "Physically Based Rendering", 4th ed., A.5.3).
@@ -21,18 +19,6 @@ fn sampling_cosine_hemisphere_pdf(w_x: f32, w_y: f32, w_z: f32) -> f32 {
 fn sampling_reflect_pdf(pdf_m: f32, v_dot_h: f32) -> f32 {
     let den = 4.0 * abs(v_dot_h);
     return select(0.0, min(pdf_m / den, BRDF_F32_MAX), den > 0.0);
-}
-
-// u clamped to [0, 1 - 2^-24] (sampling::clamp_u): a sample of exactly 1 maps where 1 - 2^-24
-// does.
-fn brdf_clamp_u(u: f32) -> f32 {
-    return clamp(u, 0.0, 0.99999994);
-}
-
-// (cos(2 pi u), sin(2 pi u)) through arguments in [-pi, pi] (see the top of this file).
-fn brdf_cos_sin_2pi(u: f32) -> vec2<f32> {
-    let t = fma(2.0, u, -1.0) * 3.1415925;
-    return vec2<f32>(-cos(t), -sin(t));
 }
 
 // v / |v|, or (0, 0, 1) for the zero vector (vec3::V3::normalize_or with the normal as the

@@ -368,24 +368,6 @@ pub const NO_TWIN: &[(&str, &str)] = &[
         "camera exposure from f64 settings, computed once on the CPU, not per pixel",
     ),
     (
-        "diffuse::eon_cltc_sample",
-        "a sampler: the samplers have no twins yet",
-    ),
-    (
-        "diffuse::eon_cltc_pdf",
-        "a sampler's pdf: with the samplers",
-    ),
-    (
-        "diffuse::eon_sample",
-        "a sampler: the samplers have no twins yet",
-    ),
-    ("diffuse::eon_pdf", "a sampler's pdf: with the samplers"),
-    (
-        "diffuse::Eon::sample",
-        "a sampler: the samplers have no twins yet",
-    ),
-    ("diffuse::Eon::pdf", "a sampler's pdf: with the samplers"),
-    (
         "sampling::",
         "not written yet: the Beckmann samplers (beckmann_vndf, beckmann_d_cos and \
          beckmann_reflection need erf_inv, which has no twin; the cosine-hemisphere, GGX D cos, \
