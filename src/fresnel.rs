@@ -813,102 +813,176 @@ impl<W: Real<Scalar = f64>> ConductorWide<W> {
 #[inline]
 #[must_use]
 pub fn conductor_fast<T: Real>(cos_theta_i: T, eta: T, k: T) -> T {
-    // Everything before `c` depends on eta and k alone: in a loop over cosines with fixed
-    // eta and k it is computed once.
-    // Valid: eta > 0 and k >= 0 (both false for NaN), max(eta, k) finite.
-    let big = eta.max(k);
-    let ok = eta.simd_gt(T::ZERO) & k.simd_ge(T::ZERO) & big.simd_le(T::MAX);
-    // The scaling of `conductor`: N / sigma, m = 1 / sigma, one quotient: 1 / max(eta, k)
-    // above 2^16, EPSILON^2 / max(eta, k) below EPSILON^2 (finite for subnormal eta and k),
-    // else 1. An invalid eta or k may make these infinite or NaN: F is NaN there regardless.
-    let large = big.simd_gt(T::splat(CONDUCTOR_SCALE_HI));
-    let tiny_bound = T::EPSILON * T::EPSILON;
-    let tiny = big.simd_lt(tiny_bound);
-    let n_scale = T::select(tiny, tiny_bound, T::ONE) / T::select(large | tiny, big, T::ONE);
-    let (re, im) = (eta * n_scale, k * n_scale);
-    let (m, sigma) = (
-        T::select(large, n_scale, T::ONE),
-        T::select(large, big, T::ONE),
-    );
-    let neg_m2 = -(m * m);
-    let n2_re = re.mul_add(re, -(im * im));
-    // u = N^2 - m^2 with (re - m)(re + m): no cancellation for eta near 1.
-    let u_re = (re - m).mul_add(re + m, -(im * im));
-    let u_im = T::TWO * re * im;
-    // Two regimes, told apart by |u| alone, each with its own powers of two (exact scalings):
-    // z = s^2 is scaled by 2^(2j - 1) before its modulus is squared, and u and |c + s|^2 by
-    // `lift` before they are squared.
-    // - |u| >= 2^-40 (f32) / 2^-400 (f64): |z| <= 2^34, so 2^(2j - 1) = 2^27 / 2^475 keeps
-    //   every square finite (and parts down to 2^-90 / 2^-986 normal: smaller ones occur only
-    //   near the critical angle, where |z| and Re s are negligible against c^2 and s2^2), and
-    //   |c + s|^2 >= |u| (u = (s - c m)(s + c m), Re s >= 0) keeps |u|^2 and |c + s|^4 normal
-    //   wherever F >= 2^-100 without a lift.
-    // - |u| < 2^-40 / 2^-400 (eta = 1 exactly, k below 2^-41 / 2^-401): |z| >= |Im z| = 2k
-    //   (about |u|), |z| <= 1 + |u| and |c + s|^2 lies within [|u|, 4 (1 + |u|)], so 2^63 /
-    //   2^509 for z and a lift of 2^61 / 2^509 keep every square, and |c + s|^4 (A + B)
-    //   (A + B <= 2), finite and normal for k down to 2^-124 / 2^-1017.
-    let u_abs2 = u_re.mul_add(u_re, u_im * u_im);
-    let (small_u2, [j_hi, j_lo], lift_exp) = if single::<T>() {
-        (pow2(-80), [32, 14], 61)
-    } else {
-        (pow2(-800), [255, 238], 509)
-    };
-    let lifted = u_abs2.simd_lt(T::splat(small_u2));
-    let by = |hi: f64, lo: f64| T::select(lifted, T::splat(hi), T::splat(lo));
-    let z_up = by(pow2(2 * j_hi - 1), pow2(2 * j_lo - 1));
-    let z_down = by(pow2(1 - 2 * j_hi), pow2(1 - 2 * j_lo));
-    let t_down = by(pow2(-j_hi), pow2(-j_lo));
-    let lift = by(pow2(lift_exp), 1.0);
-    let (ul_re, ul_im) = (u_re * lift, u_im * lift);
-    let ul_abs2 = ul_re.mul_add(ul_re, ul_im * ul_im);
-    let (ml, zl_down) = (m * lift, z_down * lift);
-    // In the second regime |Im z| is raised to 2^-123 / 2^-1016 (as if k were at least
-    // 2^-124 / 2^-1017), which keeps |c + s|^4 normal, above 0, even for u = 0.
-    let b = (u_im.abs() * z_up).max(by(pow2(if single::<T>() { -60 } else { -507 }), 0.0));
-    let b2 = b * b;
-    let g_num = (b + b) * t_down;
-    let g_pos = T::TWO * t_down;
-    // F at c = 0, where the ratio below is |u|^2 / |s|^4 = 1 only to rounding: 1, except for
-    // eta = 1, k = 0 (no interface: 0 at every angle, as in `conductor`); NaN for invalid
-    // eta or k.
-    let no_interface = u_re.simd_eq(T::ZERO) & u_im.simd_eq(T::ZERO);
-    let at_grazing = nan_unless(ok, T::select(no_interface, T::ZERO, T::ONE));
-
+    let n = ConductorFast::new(eta, k);
     let c = cos_theta_i.saturate();
+    let cm = c * n.m;
     let s2 = (T::ONE - c) * (T::ONE + c);
-    let cm = c * m;
-    let cm2 = cm * cm;
     // z = s^2 = N^2 - s2 m^2 = u + (c m)^2, from whichever form adds the smaller terms
     // (|u_re| + (c m)^2 against |Re N^2| + s2 m^2): u + (c m)^2 where (c m)^2 <= Re N^2
     // (N near 1 at any angle), else Re N^2 - s2 m^2 (small or mostly imaginary N, where
     // u + (c m)^2 would cancel).
     let z_re = T::select(
-        cm2.simd_le(n2_re),
-        cm.mul_add(cm, u_re),
-        s2.mul_add(neg_m2, n2_re),
+        (cm * cm).simd_le(n.n2_re),
+        cm.mul_add(cm, n.u_re),
+        s2.mul_add(n.neg_m2, n.n2_re),
     );
-    // s = sqrt(z) (principal root; Press et al., "Numerical Recipes", section 5.5): with
-    // a = |Re z|, b = |Im z| scaled by 2^(2j - 1) (above),
-    // |s|^2 = |z| = norm 2^(1 - 2j), t = sqrt(norm + a) = sqrt((|z| + a) / 2) 2^j, and
-    // 2 Re(s) = 2 t 2^-j for Re z >= 0, b / t = t 2^-j 2 b / (|z| + a) otherwise (no
-    // cancellation): 2 Re(s) = g t, g taken alongside the second root rather than after it.
-    let a = z_re.abs() * z_up;
-    let norm = a.mul_add(a, b2).sqrt();
-    let sum = norm + a;
-    let t = sum.sqrt();
-    // sum > 0 wherever Re z < 0: the quotient is only used where it is defined.
-    let g = T::select(z_re.simd_ge(T::ZERO), g_pos, g_num / sum);
-    let s_abs2 = norm * z_down;
-    // lift |p|^2 = lift |c m + s|^2 = lift (c m (c m + 2 Re s) + |s|^2).
-    let pl_abs2 = (c * ml).mul_add(g.mul_add(t, cm), norm * zl_down);
-    // A = rho^2 |s|^2 + s2^2, B = rho s2 2 Re(s) with s in units of m (rho = c / m = c sigma;
-    // where rho is capped, A / (A + B) rounds to 1 regardless).
-    let rho = (c * sigma).min(tiny_bound.recip());
-    let a_par = (rho * rho).mul_add(s_abs2, s2 * s2);
-    let ab = (rho * s2 * g).mul_add(t, a_par);
-    let ratio = (ul_abs2 * a_par) / (pl_abs2 * pl_abs2 * ab);
-    // A NaN cosine fails `c <= 0` and reaches F through the ratio.
-    T::select(ok & !c.simd_le(T::ZERO), ratio.min(T::ONE), at_grazing)
+    n.at(s2, z_re * n.z_up, c)
+}
+
+/// The part of [`conductor_fast`] that depends on eta and k alone (a loop over cosines with
+/// fixed eta and k computes it once), and the rest as [`ConductorFast::at`], which
+/// `cook_torrance::ggx_conductor_local_fast` calls with the squared cosine (wo.s)^2 / |s|^2
+/// of the unnormalized half vector s.
+#[derive(Clone, Copy)]
+pub(crate) struct ConductorFast<T: Real> {
+    ok: T::Mask,
+    /// 1 / sigma where N is scaled down, else 1.
+    pub(crate) m: T,
+    sigma: T,
+    neg_m2: T,
+    /// Re(N^2) in units of m^2.
+    n2_re: T,
+    /// Re(N^2 - m^2) in units of m^2.
+    pub(crate) u_re: T,
+    ul_abs2: T,
+    ml: T,
+    zl_down: T,
+    /// 2^(2j - 1), the power of two that scales z before its modulus is squared.
+    pub(crate) z_up: T,
+    z_down: T,
+    b2: T,
+    g_num: T,
+    g_pos: T,
+    tiny_bound: T,
+    at_grazing: T,
+}
+
+impl<T: Real> ConductorFast<T> {
+    /// The quantities of [`conductor_fast`] that depend on eta and k alone.
+    #[inline]
+    pub(crate) fn new(eta: T, k: T) -> Self {
+        // Valid: eta > 0 and k >= 0 (both false for NaN), max(eta, k) finite.
+        let big = eta.max(k);
+        let ok = eta.simd_gt(T::ZERO) & k.simd_ge(T::ZERO) & big.simd_le(T::MAX);
+        // The scaling of `conductor`: N / sigma, m = 1 / sigma, one quotient: 1 / max(eta, k)
+        // above 2^16, EPSILON^2 / max(eta, k) below EPSILON^2 (finite for subnormal eta and k),
+        // else 1. An invalid eta or k may make these infinite or NaN: F is NaN there regardless.
+        let large = big.simd_gt(T::splat(CONDUCTOR_SCALE_HI));
+        let tiny_bound = T::EPSILON * T::EPSILON;
+        let tiny = big.simd_lt(tiny_bound);
+        let n_scale = T::select(tiny, tiny_bound, T::ONE) / T::select(large | tiny, big, T::ONE);
+        let (re, im) = (eta * n_scale, k * n_scale);
+        let (m, sigma) = (
+            T::select(large, n_scale, T::ONE),
+            T::select(large, big, T::ONE),
+        );
+        let neg_m2 = -(m * m);
+        let n2_re = re.mul_add(re, -(im * im));
+        // u = N^2 - m^2 with (re - m)(re + m): no cancellation for eta near 1.
+        let u_re = (re - m).mul_add(re + m, -(im * im));
+        let u_im = T::TWO * re * im;
+        // Two regimes, told apart by |u| alone, each with its own powers of two (exact scalings):
+        // z = s^2 is scaled by 2^(2j - 1) before its modulus is squared, and u and |c + s|^2 by
+        // `lift` before they are squared.
+        // - |u| >= 2^-40 (f32) / 2^-400 (f64): |z| <= 2^34, so 2^(2j - 1) = 2^27 / 2^475 keeps
+        //   every square finite (and parts down to 2^-90 / 2^-986 normal: smaller ones occur only
+        //   near the critical angle, where |z| and Re s are negligible against c^2 and s2^2), and
+        //   |c + s|^2 >= |u| (u = (s - c m)(s + c m), Re s >= 0) keeps |u|^2 and |c + s|^4 normal
+        //   wherever F >= 2^-100 without a lift.
+        // - |u| < 2^-40 / 2^-400 (eta = 1 exactly, k below 2^-41 / 2^-401): |z| >= |Im z| = 2k
+        //   (about |u|), |z| <= 1 + |u| and |c + s|^2 lies within [|u|, 4 (1 + |u|)], so 2^63 /
+        //   2^509 for z and a lift of 2^61 / 2^509 keep every square, and |c + s|^4 (A + B)
+        //   (A + B <= 2), finite and normal for k down to 2^-124 / 2^-1017.
+        let u_abs2 = u_re.mul_add(u_re, u_im * u_im);
+        let (small_u2, [j_hi, j_lo], lift_exp) = if single::<T>() {
+            (pow2(-80), [32, 14], 61)
+        } else {
+            (pow2(-800), [255, 238], 509)
+        };
+        let lifted = u_abs2.simd_lt(T::splat(small_u2));
+        let by = |hi: f64, lo: f64| T::select(lifted, T::splat(hi), T::splat(lo));
+        let z_up = by(pow2(2 * j_hi - 1), pow2(2 * j_lo - 1));
+        let z_down = by(pow2(1 - 2 * j_hi), pow2(1 - 2 * j_lo));
+        let t_down = by(pow2(-j_hi), pow2(-j_lo));
+        let lift = by(pow2(lift_exp), 1.0);
+        let (ul_re, ul_im) = (u_re * lift, u_im * lift);
+        let ul_abs2 = ul_re.mul_add(ul_re, ul_im * ul_im);
+        let (ml, zl_down) = (m * lift, z_down * lift);
+        // In the second regime |Im z| is raised to 2^-123 / 2^-1016 (as if k were at least
+        // 2^-124 / 2^-1017), which keeps |c + s|^4 normal, above 0, even for u = 0.
+        let b = (u_im.abs() * z_up).max(by(pow2(if single::<T>() { -60 } else { -507 }), 0.0));
+        let b2 = b * b;
+        let g_num = (b + b) * t_down;
+        let g_pos = T::TWO * t_down;
+        // F at c = 0, where the ratio below is |u|^2 / |s|^4 = 1 only to rounding: 1, except for
+        // eta = 1, k = 0 (no interface: 0 at every angle, as in `conductor`); NaN for invalid
+        // eta or k.
+        let no_interface = u_re.simd_eq(T::ZERO) & u_im.simd_eq(T::ZERO);
+        let at_grazing = nan_unless(ok, T::select(no_interface, T::ZERO, T::ONE));
+        Self {
+            ok,
+            m,
+            sigma,
+            neg_m2,
+            n2_re,
+            u_re,
+            ul_abs2,
+            ml,
+            zl_down,
+            z_up,
+            z_down,
+            b2,
+            g_num,
+            g_pos,
+            tiny_bound,
+            at_grazing,
+        }
+    }
+
+    /// F at the cosine c (in [0, 1], or NaN), given s2 = 1 - c^2 and zu = Re(z) 2^(2j - 1),
+    /// z = s^2 = N^2 - s2 m^2 (in units of m^2; `z_up` the power of two), each rounded as the
+    /// caller chooses: only c m and c sigma read c itself, after the two roots, so that a
+    /// caller with c^2 at hand starts the roots before c.
+    #[inline]
+    pub(crate) fn at(self, s2: T, zu: T, c: T) -> T {
+        let Self {
+            ok,
+            m,
+            sigma,
+            ul_abs2,
+            ml,
+            zl_down,
+            z_down,
+            b2,
+            g_num,
+            g_pos,
+            tiny_bound,
+            at_grazing,
+            ..
+        } = self;
+        // s = sqrt(z) (principal root; Press et al., "Numerical Recipes", section 5.5): with
+        // a = |Re z|, b = |Im z| scaled by 2^(2j - 1) (above),
+        // |s|^2 = |z| = norm 2^(1 - 2j), t = sqrt(norm + a) = sqrt((|z| + a) / 2) 2^j, and
+        // 2 Re(s) = 2 t 2^-j for Re z >= 0, b / t = t 2^-j 2 b / (|z| + a) otherwise (no
+        // cancellation): 2 Re(s) = g t, g taken alongside the second root rather than after it.
+        let a = zu.abs();
+        let norm = zu.mul_add(zu, b2).sqrt();
+        let sum = norm + a;
+        let t = sum.sqrt();
+        // sum > 0 wherever Re z < 0: the quotient is only used where it is defined.
+        let g = T::select(zu.simd_ge(T::ZERO), g_pos, g_num / sum);
+        let s_abs2 = norm * z_down;
+        // lift |p|^2 = lift |c m + s|^2 = lift (c m (c m + 2 Re s) + |s|^2).
+        let pl_abs2 = (c * ml).mul_add(g.mul_add(t, c * m), norm * zl_down);
+        // A = rho^2 |s|^2 + s2^2, B = rho s2 2 Re(s) with s in units of m (rho = c / m = c sigma;
+        // where rho is capped, A / (A + B) rounds to 1 regardless).
+        let rho = (c * sigma).min(tiny_bound.recip());
+        let a_par = (rho * rho).mul_add(s_abs2, s2 * s2);
+        let ab = (rho * s2 * g).mul_add(t, a_par);
+        let ratio = (ul_abs2 * a_par) / (pl_abs2 * pl_abs2 * ab);
+        // A NaN cosine fails `c <= 0` and reaches F through the ratio.
+        T::select(ok & !c.simd_le(T::ZERO), ratio.min(T::ONE), at_grazing)
+    }
 }
 
 /// A complex index of refraction eta + i k, with its two parts named so that a call site cannot

@@ -31,10 +31,21 @@
 //! the thickness goes to 0 (n2' = n1 + (n2 - n1) smoothstep(0, 30 nm, d)), so that a
 //! vanishing film gives the base's own Fresnel reflectance: for d = 0 and for n2 = n1 the
 //! result is exactly the two-interface-free Fresnel reflectance of the base seen from the
-//! outside (R12 = 0, every C_m = 0). The sample viewer differs in three documented ways: it
-//! uses Schlick's approximation with a base given by its F0 for both interfaces, drops the
-//! polarization, and writes the blend as smoothstep(0, 0.03, d) with d in nanometres (a step
-//! at 0.03 nm, the paper's 0.03 micrometres read in the wrong unit).
+//! outside (R12 = 0, every C_m = 0).
+//!
+//! The Khronos glTF-Sample-Viewer's `evalIridescence` (`iridescence.glsl` at commit
+//! 14c393ecf0292030945fcebdf658b143329b8897, base (n, k) from F0 by Gulbrandsen's
+//! `artisticIor`) computes the same polarized series and differs in four ways: it stops at
+//! m = 2; it adds C0 as white in linear Rec.709 (the crate adds it as white in XYZ, which the
+//! matrix below maps to C0 times its row sums 1.205, 0.948, 0.909); its conductor phase
+//! formula expects the base index as n (1 + i kappa) but is handed the extinction k itself
+//! (kappa = k / n), which shifts a metal's phase; and it writes the index blend as
+//! smoothstep(0, 0.03, d) with d in nanometres (a step at 0.03 nm, the paper's 0.03
+//! micrometres read in the wrong unit). With those four read the crate's way its result equals
+//! the crate's to 2.6e-5 in linear Rec.709; as shipped it differs by up to 0.16 on dielectric
+//! and 0.29 on metal bases (`cargo test --test iridescence viewer:: -- --nocapture`). Older
+//! viewer versions (commit 60f616a5209e43d1359ee106b747376065180095) used Schlick's
+//! approximation for both interfaces, unpolarized.
 //!
 //! Convert the XYZ result to linear Rec.709 / sRGB with [`XYZ_TO_REC709`] (the paper's and the
 //! viewer's matrix), clamping negatives (out-of-gamut colours).

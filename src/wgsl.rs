@@ -15,11 +15,11 @@
 //! # Composing
 //! [`COMMON`] must come first, then each family after the families it calls into
 //! ([`Family::needs`]: [`COOK_TORRANCE`] needs [`GGX`], [`FRESNEL`] and [`BECKMANN`],
-//! [`DIFFUSE`] needs [`FRESNEL`], [`MATERIAL`] needs [`GGX`], [`FRESNEL`], [`BECKMANN`] and
-//! [`COOK_TORRANCE`], [`SAMPLING`] needs [`GGX`] and [`BECKMANN`], [`LAYERS`] needs [`GGX`]
-//! and [`FRESNEL`], [`ROUGH_DIELECTRIC`] needs [`GGX`], [`FRESNEL`] and [`BECKMANN`],
-//! [`TRANSMISSION`] needs those and [`ROUGH_DIELECTRIC`]; [`IRIDESCENCE`] needs only
-//! [`COMMON`]). No family defines a name another family defines, so any such subset
+//! [`DIFFUSE`] needs [`FRESNEL`], [`MATERIAL`] needs [`GGX`], [`FRESNEL`], [`BECKMANN`],
+//! [`COOK_TORRANCE`] and [`SAMPLING`], [`SAMPLING`] needs [`GGX`] and [`BECKMANN`], [`LAYERS`]
+//! needs [`GGX`] and [`FRESNEL`], [`ROUGH_DIELECTRIC`] needs [`GGX`], [`FRESNEL`], [`BECKMANN`]
+//! and [`SAMPLING`], [`TRANSMISSION`] needs those and [`ROUGH_DIELECTRIC`]; [`IRIDESCENCE`]
+//! needs only [`COMMON`]). No family defines a name another family defines, so any such subset
 //! concatenated after [`COMMON`] is one valid WGSL module:
 //!
 //! ```
@@ -44,7 +44,7 @@
 //! by input, to an error bound derived from the accuracy table of that same section.
 
 /// Constants and helpers every family uses (pi, the largest finite `f32`, the alpha clamps,
-/// 1 - c^2 without cancellation), and the twins of `brdf::microfacet`'s roughness conversions.
+/// 1 - c^2 without cancellation, the samplers' clamp of u and azimuth), and the twins of `brdf::microfacet`'s roughness conversions.
 /// Include it once, first.
 pub const COMMON: &str = include_str!("../wgsl/common.wgsl");
 
@@ -59,7 +59,8 @@ pub const FRAME: &str = include_str!("../wgsl/frame.wgsl");
 pub const GGX: &str = include_str!("../wgsl/ggx.wgsl");
 
 /// The twins of `brdf::fresnel`'s Schlick family (plain, F90, spherical Gaussian, F82 tint,
-/// RGB forms), the exact dielectric reflectance (polarized and not), the exact conductor
+/// RGB forms), the exact dielectric reflectance (polarized and not, and
+/// `fresnel_dielectric_fast`, the twin of its working-precision form), the exact conductor
 /// reflectance of a complex IOR (and its RGB form), F0 and IOR conversions and the dielectric
 /// average's fit.
 pub const FRESNEL: &str = include_str!("../wgsl/fresnel.wgsl");
@@ -79,7 +80,8 @@ pub const BECKMANN: &str = include_str!("../wgsl/beckmann.wgsl");
 pub const COOK_TORRANCE: &str = include_str!("../wgsl/cook_torrance.wgsl");
 
 /// The twins of `brdf::diffuse`'s Lambert, qualitative and Fujii Oren-Nayar (with its A and
-/// B), EON (exact and fitted, with its directional and average albedos), Burley and
+/// B), EON (exact and fitted, with its directional and average albedos, its CLTC and mixture
+/// samplers and their pdfs), Burley and
 /// renormalized Burley lobes, the diffuse-Fresnel couplings, and the parameter types' `eval`
 /// on local directions (`diffuse_Burley_eval`, `diffuse_Eon_albedo`, ...). Needs [`FRESNEL`]
 /// before it.
@@ -105,8 +107,9 @@ pub const TONEMAP: &str = include_str!("../wgsl/tonemap.wgsl");
 
 /// The twins of `brdf::material`'s F0 from reflectance, the metallic-roughness BRDF from dot
 /// products (its three diffuse couplings, and glTF's composition; precise and fast tiers), and
-/// `material::MetallicRoughness`'s `eval`, `eval_fast` and `specular_probability` on local
-/// directions. Needs [`GGX`], [`FRESNEL`], [`BECKMANN`] and [`COOK_TORRANCE`] before it.
+/// `material::MetallicRoughness`'s `eval`, `eval_fast`, `specular_probability`, `sample`,
+/// `sample_weighted` and `pdf` on local directions. Needs [`GGX`], [`FRESNEL`], [`BECKMANN`],
+/// [`COOK_TORRANCE`] and [`SAMPLING`] before it.
 pub const MATERIAL: &str = include_str!("../wgsl/material.wgsl");
 
 /// The twins of `brdf::ibl::dfg`'s per-pixel terms: the analytic split-sum fits (Karis mobile,
@@ -130,14 +133,15 @@ pub const LAYERS: &str = include_str!("../wgsl/layers.wgsl");
 
 /// The twins of `brdf::rough_dielectric`'s generalized half vector, BSDF
 /// (`rough_dielectric_eval`, the model a `u32`: 0 = GGX, 1 = Beckmann; the transport a `u32`:
-/// 0 = radiance, 1 = importance) and pdf of both lobes (the samplers have no twins yet). Needs
-/// [`GGX`], [`FRESNEL`] and [`BECKMANN`] before it.
+/// 0 = radiance, 1 = importance), pdf of both lobes and GGX sampler
+/// (`rough_dielectric_ggx_sample`; the Beckmann sampler, which needs erf_inv, has no twin).
+/// Needs [`GGX`], [`FRESNEL`], [`BECKMANN`] and [`SAMPLING`] before it.
 pub const ROUGH_DIELECTRIC: &str = include_str!("../wgsl/rough_dielectric.wgsl");
 
 /// The twins of `brdf::transmission::Volume`'s Beer-Lambert transmittance and attenuation
 /// coefficient (`transmission_Volume_transmittance`, taking the constructor's thickness,
 /// attenuation colour and distance first), and of `transmission::thin_walled_btdf` and
-/// `transmission::dielectric_bsdf`. Needs [`GGX`], [`FRESNEL`], [`BECKMANN`] and
+/// `transmission::dielectric_bsdf`. Needs [`GGX`], [`FRESNEL`], [`BECKMANN`], [`SAMPLING`] and
 /// [`ROUGH_DIELECTRIC`] before it.
 pub const TRANSMISSION: &str = include_str!("../wgsl/transmission.wgsl");
 
@@ -163,9 +167,9 @@ pub const ALL: &str = concat!(
     include_str!("../wgsl/phong.wgsl"),
     include_str!("../wgsl/lights.wgsl"),
     include_str!("../wgsl/tonemap.wgsl"),
-    include_str!("../wgsl/material.wgsl"),
     include_str!("../wgsl/ibl.wgsl"),
     include_str!("../wgsl/sampling.wgsl"),
+    include_str!("../wgsl/material.wgsl"),
     include_str!("../wgsl/layers.wgsl"),
     include_str!("../wgsl/rough_dielectric.wgsl"),
     include_str!("../wgsl/transmission.wgsl"),
@@ -232,11 +236,6 @@ pub const FAMILIES: &[Family] = &[
         needs: &[],
     },
     Family {
-        name: "material",
-        source: MATERIAL,
-        needs: &["ggx", "fresnel", "beckmann", "cook_torrance"],
-    },
-    Family {
         name: "ibl",
         source: IBL,
         needs: &[],
@@ -247,6 +246,11 @@ pub const FAMILIES: &[Family] = &[
         needs: &["ggx", "beckmann"],
     },
     Family {
+        name: "material",
+        source: MATERIAL,
+        needs: &["ggx", "fresnel", "beckmann", "cook_torrance", "sampling"],
+    },
+    Family {
         name: "layers",
         source: LAYERS,
         needs: &["ggx", "fresnel"],
@@ -254,12 +258,12 @@ pub const FAMILIES: &[Family] = &[
     Family {
         name: "rough_dielectric",
         source: ROUGH_DIELECTRIC,
-        needs: &["ggx", "fresnel", "beckmann"],
+        needs: &["ggx", "fresnel", "beckmann", "sampling"],
     },
     Family {
         name: "transmission",
         source: TRANSMISSION,
-        needs: &["ggx", "fresnel", "beckmann", "rough_dielectric"],
+        needs: &["ggx", "fresnel", "beckmann", "sampling", "rough_dielectric"],
     },
     Family {
         name: "iridescence",

@@ -52,6 +52,20 @@ fn brdf_horizon_if_zero(w: vec3<f32>) -> vec3<f32> {
     return vec3<f32>(select(w.x, 1.0, zero), select(w.y, 0.0, zero), select(w.z, 0.0, zero));
 }
 
+// u clamped to [0, 1 - 2^-24] (sampling::clamp_u): a sample of exactly 1 maps where 1 - 2^-24
+// does.
+fn brdf_clamp_u(u: f32) -> f32 {
+    return clamp(u, 0.0, 0.99999994);
+}
+
+// (cos(2 pi u), sin(2 pi u)) for the samplers' azimuths: WGSL promises sin and cos only on
+// [-pi, pi] (absolute error 2^-11 there), so they are taken as -cos(t) and -sin(t) with
+// t = (2 u - 1) pi', pi' the f32 just below pi, which keeps |t| <= pi.
+fn brdf_cos_sin_2pi(u: f32) -> vec2<f32> {
+    let t = fma(2.0, u, -1.0) * 3.1415925;
+    return vec2<f32>(-cos(t), -sin(t));
+}
+
 // The twins of the Rust module `microfacet`'s roughness conversions.
 
 // alpha = r^2 from the perceptual roughness r (glTF's roughnessFactor, Unreal Engine 4's

@@ -60,6 +60,17 @@ fn cook_torrance_ggx_dielectric(
     return brdf_cook_torrance_assemble(dv, n_dot_v, n_dot_l, f);
 }
 
+// The working-precision tier of cook_torrance_ggx_dielectric (cook_torrance::
+// ggx_dielectric_fast): D from ggx_d_fast, V from ggx_v_correlated, F from
+// fresnel_dielectric_fast at v.h clamped to [0, 1] (Walter et al. 2007; Born and Wolf 1.5.2).
+fn cook_torrance_ggx_dielectric_fast(
+    n_dot_v: f32, n_dot_l: f32, n_dot_h: f32, v_dot_h: f32, alpha: f32, eta: f32,
+) -> f32 {
+    let f = fresnel_dielectric_fast(saturate(v_dot_h), eta);
+    let dv = ggx_d_fast(n_dot_h, alpha) * ggx_v_correlated(n_dot_v, n_dot_l, alpha);
+    return brdf_cook_torrance_assemble(dv, n_dot_v, n_dot_l, f);
+}
+
 // The half vector h = normalize(wo + wi) (the normal (0, 0, 1) where wo + wi = 0) and
 // v.h = wo.h clamped to [0, 1] (Walter et al. 2007, eq. 13); |s|^2 and the dot products in the
 // order of the Rust V3::dot (z's product first).

@@ -2,7 +2,7 @@
 // Oren-Nayar model and its A and B, Burley and its renormalized form, the diffuse-Fresnel
 // couplings, and the parameter types' `eval` on local-frame directions). Needs common.wgsl and
 // fresnel.wgsl. Also the full and Fujii's Oren-Nayar and EON (exact and fitted) with its
-// albedos.
+// albedos and its importance sampling (the CLTC sampler, the mixture, their pdfs).
 
 // 0 unless both cosines are above the horizon (domain::above_horizon).
 fn brdf_above_horizon(n_dot_v: f32, n_dot_l: f32, value: f32) -> f32 {
@@ -442,4 +442,156 @@ fn diffuse_OrenNayarFull_eval(
 ) -> f32 {
     let v_dot_l = brdf_diffuse_dot(wo_x, wo_y, wo_z, wi_x, wi_y, wi_z);
     return diffuse_oren_nayar_full(wo_z, wi_z, v_dot_l, rho, sigma);
+}
+
+// EON's importance sampling (Portsmouth, Kutz and Hill 2025, "EON: A practical energy-preserving
+// rough diffuse BRDF", the cltc_sample, cltc_pdf, sample_EON and pdf_EON listings).
+
+// The clipped linearly transformed cosine for one (wo, sigma) (the Rust kernel's Cltc::new; the
+// paper's ltc_terms fits, mu = wo.z clamped into [0, 1]): the matrix M = [[a, 0, b], [0, c, 0],
+// [d, 0, 1]] (d capped at 0), the kept fraction s = (1 + v) / 2 with v = 1 / sqrt(1 + d^2),
+// 1 - v = d^2 / (k (k + 1)) (k = sqrt(1 + d^2)), k^2, det M and wo's unit azimuth (fx, fy)
+// ((1, 0) at the pole): (a, b, c, d, s, v, 1 - v, k^2, det, fx, fy).
+fn brdf_eon_cltc(wo: vec3<f32>, sigma: f32) -> array<f32, 11> {
+    let mu = clamp(wo.z, 0.0, 1.0);
+    let r = sigma;
+    let a = 1.0 + r * (fma(fma(0.111709, mu, -0.518982), mu, 0.303392)
+        + fma(0.335918, mu, -0.276266) * r);
+    let b = r * (fma(1.15859, mu, -1.16407) + fma(-0.150105, mu, 0.150815) * r)
+        / fma(mu * mu, mu, -1.43545);
+    let c = 1.0 + fma(fma(0.261777, mu, -0.506373), mu, 0.20013) * r;
+    // The fit of d rounds up to +0.0035 sigma within 1e-4 of mu = 1: capped at 0, as the clip
+    // assumes.
+    let d = min(fma(fma(0.475392, mu, -1.01625), mu, 0.540852) * r
+        / fma(mu + 0.0725628, mu, -1.0743), 0.0);
+    let k2 = fma(d, d, 1.0);
+    let k = sqrt(k2);
+    let v = 1.0 / k;
+    let one_minus_v = d * d / (k * (k + 1.0));
+    let clip = 0.5 * (1.0 + v);
+    let det = c * fma(-b, d, a);
+    let len2 = fma(wo.x, wo.x, wo.y * wo.y);
+    let ok = len2 > 1.17549435e-38;
+    let inv = select(1.0, 1.0 / sqrt(len2), ok);
+    return array<f32, 11>(a, b, c, d, clip, v, one_minus_v, k2, det, select(1.0, wo.x * inv, ok),
+        select(0.0, wo.y * inv, ok));
+}
+
+// A direction of the clipped lobe from the disk point at radius sqrt(u1) and angle phi, with
+// its pdf (the Rust kernel's Cltc::sample_disk): the disk squeezed onto the region the clip
+// keeps, x' = v h - s (h + x), z^2 = ((1 - v) h + s (h + x)) s (h - x) with h^2 = 1 - u1
+// sin^2 phi, written in h + x and h - x (whose product is 1 - u1) so that nothing cancels at
+// the rim; wi = M wh / |M wh| rotated to wo's azimuth, pdf = z |M wh|^3 / (pi s det M).
+fn brdf_eon_sample_disk(t: array<f32, 11>, u1: f32, cos_phi: f32, sin_phi: f32) -> vec4<f32> {
+    let q = 1.0 - u1;
+    let r = sqrt(u1);
+    let x = r * cos_phi;
+    let y = r * sin_phi;
+    let h = sqrt(fma(u1, cos_phi * cos_phi, q));
+    let pos = x > 0.0;
+    let direct = h + abs(x);
+    let other = q / direct;
+    let hp = select(other, direct, pos);
+    let hm = select(direct, other, pos);
+    let s = t[4];
+    let xs = fma(t[5], h, -s * hp);
+    let z = sqrt(max(fma(t[6], h, s * hp) * s * hm, 0.0));
+    let n = s * hp * t[7] * fma(2.0 * t[5], h, -s * hp);
+    let wz = select(fma(t[3], xs, z), n / fma(-t[3], xs, z), xs > 0.0);
+    let w = vec3<f32>(fma(t[0], xs, t[1] * z), t[2] * y, wz);
+    let len = sqrt(fma(w.x, w.x, fma(w.y, w.y, w.z * w.z)));
+    let pdf = z * len * len * len / (BRDF_PI * s * t[8]);
+    let inv = 1.0 / len;
+    let u = vec3<f32>(w.x * inv, w.y * inv, w.z * inv);
+    return vec4<f32>(fma(t[9], u.x, -t[10] * u.y), fma(t[10], u.x, t[9] * u.y), u.z, pdf);
+}
+
+// The density of brdf_eon_sample_disk at wi (the Rust kernel's Cltc::pdf):
+// det^2 / |adj(M) w|^4 max(0, (adj(M) w).z) / (pi s), w = wi in wo's azimuthal frame.
+fn brdf_eon_cltc_density(t: array<f32, 11>, wi: vec3<f32>) -> f32 {
+    let wx = fma(t[9], wi.x, t[10] * wi.y);
+    let wy = fma(t[9], wi.y, -t[10] * wi.x);
+    let hx = t[2] * fma(-t[1], wi.z, wx);
+    let hy = fma(-t[1], t[3], t[0]) * wy;
+    let hz = t[2] * fma(t[0], wi.z, -t[3] * wx);
+    let len2 = fma(hx, hx, fma(hy, hy, hz * hz));
+    let q = t[8] / len2;
+    return q * q * max(hz, 0.0) / (BRDF_PI * t[4]);
+}
+
+// The CLTC sampler alone (diffuse::eon_cltc_sample): (wi.x, wi.y, wi.z, pdf) for view wo and
+// roughness sigma in [0, 1], u1 and u2 clamped into [0, 1); pdf 0 where wo.z <= 0 or wi.z <= 0.
+fn diffuse_eon_cltc_sample(
+    wo_x: f32, wo_y: f32, wo_z: f32, sigma: f32, u1: f32, u2: f32,
+) -> vec4<f32> {
+    let t = brdf_eon_cltc(vec3<f32>(wo_x, wo_y, wo_z), sigma);
+    let cs = brdf_cos_sin_2pi(brdf_clamp_u(u2));
+    let s = brdf_eon_sample_disk(t, brdf_clamp_u(u1), cs.x, cs.y);
+    return vec4<f32>(s.x, s.y, s.z, brdf_above_horizon(wo_z, s.z, s.w));
+}
+
+// The pdf of diffuse_eon_cltc_sample at wi (diffuse::eon_cltc_pdf), 0 where wo.z <= 0 or
+// wi.z <= 0.
+fn diffuse_eon_cltc_pdf(
+    wo_x: f32, wo_y: f32, wo_z: f32, wi_x: f32, wi_y: f32, wi_z: f32, sigma: f32,
+) -> f32 {
+    let t = brdf_eon_cltc(vec3<f32>(wo_x, wo_y, wo_z), sigma);
+    return brdf_above_horizon(wo_z, wi_z,
+        brdf_eon_cltc_density(t, vec3<f32>(wi_x, wi_y, wi_z)));
+}
+
+// The uniform lobe's probability P_u = sigma^0.1 (0.162925 - 0.372058 mu + 0.538233 mu^2 -
+// 0.290822 mu^3), mu = wo.z clamped into [0, 1]; 0 at sigma = 0 (where pow promises nothing).
+fn brdf_eon_uniform_weight(wo_z: f32, sigma: f32) -> f32 {
+    let mu = clamp(wo_z, 0.0, 1.0);
+    let poly = fma(fma(fma(-0.290822, mu, 0.538233), mu, -0.372058), mu, 0.162925);
+    return select(pow(sigma, 0.1), 0.0, sigma == 0.0) * poly;
+}
+
+// The mixture's pdf P_u / (2 pi) + (1 - P_u) pdf_CLTC(wi), 0 where wo.z <= 0 or wi.z <= 0.
+fn brdf_eon_mixture_pdf(t: array<f32, 11>, p_u: f32, wo_z: f32, wi: vec3<f32>) -> f32 {
+    let pdf_c = brdf_eon_cltc_density(t, wi);
+    return brdf_above_horizon(wo_z, wi.z, fma(p_u, 0.5 * BRDF_FRAC_1_PI - pdf_c, pdf_c));
+}
+
+// EON's importance sampling (diffuse::eon_sample): with probability P_u a uniform hemisphere
+// direction (z = 1 - u1 / P_u), otherwise the CLTC direction from (u1 - P_u) / (1 - P_u); u2 is
+// the azimuth of both. (wi.x, wi.y, wi.z, pdf), pdf = diffuse_eon_pdf(wo, wi, sigma).
+fn diffuse_eon_sample(wo_x: f32, wo_y: f32, wo_z: f32, sigma: f32, u1: f32, u2: f32) -> vec4<f32> {
+    let t = brdf_eon_cltc(vec3<f32>(wo_x, wo_y, wo_z), sigma);
+    let p_u = brdf_eon_uniform_weight(wo_z, sigma);
+    let uc1 = brdf_clamp_u(u1);
+    let cs = brdf_cos_sin_2pi(brdf_clamp_u(u2));
+    // Strict <: at sigma = 0 (P_u = 0) every u1 takes the CLTC lobe. The floor keeps the unused
+    // quotient finite there (P_u > 0 is at least 0.038 sigma^0.1, a normal number, elsewhere).
+    let uniform = uc1 < p_u;
+    let z = 1.0 - brdf_clamp_u(uc1 / max(p_u, 1.17549435e-38));
+    let sin_theta = sqrt(max((1.0 - z) * (1.0 + z), 0.0));
+    let wu = vec3<f32>(sin_theta * cs.x, sin_theta * cs.y, z);
+    let wc = brdf_eon_sample_disk(t, brdf_clamp_u((uc1 - p_u) / (1.0 - p_u)), cs.x, cs.y);
+    let wi = select(vec3<f32>(wc.x, wc.y, wc.z), wu, uniform);
+    return vec4<f32>(wi, brdf_eon_mixture_pdf(t, p_u, wo_z, wi));
+}
+
+// The pdf of diffuse_eon_sample at wi (diffuse::eon_pdf).
+fn diffuse_eon_pdf(
+    wo_x: f32, wo_y: f32, wo_z: f32, wi_x: f32, wi_y: f32, wi_z: f32, sigma: f32,
+) -> f32 {
+    let t = brdf_eon_cltc(vec3<f32>(wo_x, wo_y, wo_z), sigma);
+    return brdf_eon_mixture_pdf(t, brdf_eon_uniform_weight(wo_z, sigma), wo_z,
+        vec3<f32>(wi_x, wi_y, wi_z));
+}
+
+// diffuse::Eon::sample: diffuse_eon_sample with the lobe's sigma (rho does not enter).
+fn diffuse_Eon_sample(
+    rho: f32, sigma: f32, wo_x: f32, wo_y: f32, wo_z: f32, u1: f32, u2: f32,
+) -> vec4<f32> {
+    return diffuse_eon_sample(wo_x, wo_y, wo_z, sigma, u1, u2);
+}
+
+// diffuse::Eon::pdf: diffuse_eon_pdf with the lobe's sigma.
+fn diffuse_Eon_pdf(
+    rho: f32, sigma: f32, wo_x: f32, wo_y: f32, wo_z: f32, wi_x: f32, wi_y: f32, wi_z: f32,
+) -> f32 {
+    return diffuse_eon_pdf(wo_x, wo_y, wo_z, wi_x, wi_y, wi_z, sigma);
 }

@@ -149,6 +149,77 @@ fn fresnel_dielectric(cos_theta_i: f32, eta: f32) -> f32 {
     return 0.5 * (r.x + r.y);
 }
 
+// The exact unpolarized dielectric reflectance in working precision, the twin of
+// fresnel::dielectric_fast operation for operation: the cancellation-free arrangement of
+// fresnel_dielectric_polarized (c = |cos_theta_i|, s2 = (1 - c)(1 + c), a = c, m = (eta - 1)
+// (eta + 1) from outside; a = eta c, m = -(eta - 1)(eta + 1) from inside), with g2 taken as
+// eta^2 - s2 (outside) resp. 1 - eta^2 s2 (inside) where a^2 + m would cancel and that form's
+// larger term is the smaller, W = eta^2 c^2 - s2 resp. c^2 - eta^2 s2 (its one cancellation the
+// Brewster zero), r_perp = -m / (a (a + 2 g) + g2), r_par = (eta^2 - 1) W f / (x (x + 2 y) + y^2);
+// and beyond eta in [1/256, 256] the textbook ratios of nu (eta outside, 1 / eta inside):
+// r_perp = (c / nu - cos_t) / (c / nu + cos_t), r_par = (nu c - cos_t) / (nu c + cos_t) for
+// nu > 256 (nu c capped at 2^32), r_perp = (c - g) / (c + g), r_par = (nu^2 c - g) / (nu^2 c + g)
+// with g = sqrt(nu^2 - s2) for nu < 1/256 (nu raised to 2^-40). F = (r_perp^2 + r_par^2) / 2
+// capped at 1; 1 under total internal reflection (Born and Wolf, "Principles of Optics", 1.5.2).
+// 1 / nu outside is taken as 1 / min(eta, 2^64): beyond 2^64 it only scales c / nu, which
+// moves r_perp^2 by less than 2^-62 there, and keeps the divisor inside [2^-126, 2^126], where
+// WGSL promises x / y; 1 / eta inside as 1 / min(eta, 2^40), the same f32 as the Rust kernel's
+// max(1 / eta, 2^-40).
+fn fresnel_dielectric_fast(cos_theta_i: f32, eta: f32) -> f32 {
+    let inside = cos_theta_i < 0.0;
+    let c = min(abs(cos_theta_i), 1.0);
+    let s2 = (1.0 - c) * (1.0 + c);
+    let cc = c * c;
+
+    // The moderate path, on eta clamped into its range (the extreme rows discard it).
+    let n = clamp(eta, 0.00390625, 256.0);
+    let n2 = n * n;
+    let n2m1 = (n - 1.0) * (n + 1.0);
+    let a = select(c, n * c, inside);
+    let a2 = a * a;
+    let m = select(n2m1, -n2m1, inside);
+    let other_form = select(n2 - s2, fma(-n2, s2, 1.0), inside);
+    let other_max = select(max(n2, s2), 1.0, inside);
+    let cancels = (inside & (n > 1.0)) | (!inside & (n < 1.0));
+    let use_other = cancels & (max(a2, -m) > other_max);
+    let g2 = select(a2 + m, other_form, use_other);
+    let g = sqrt(max(g2, 0.0));
+    let d_perp = fma(a, fma(2.0, g, a), g2);
+    let f = select(1.0, n2, inside);
+    let w = select(fma(n2, cc, -s2), fma(-n2, s2, cc), inside);
+    let x = n2 * select(a, g, inside);
+    let y = select(g, a, inside);
+    let y2 = select(g2, a2, inside);
+    let d_par = fma(x, fma(2.0, y, x), y2);
+    let tir_moderate = g2 < 0.0;
+
+    // The extreme path: nu = eta (outside) or 1 / eta (inside).
+    let big_nu = (inside & !(eta > 1.0)) | (!inside & (eta > 1.0));
+    let mu = select(1.0 / min(eta, 18446744073709551616.0), eta, inside);
+    let nu_c = min(select(eta * c, c / eta, inside), 4294967296.0);
+    let nu = select(eta, 1.0 / min(eta, 1099511627776.0), inside);
+    let nu_lo = max(nu, 9.094947017729282e-13);
+    let nu2 = nu_lo * nu_lo;
+    let rad = select(nu2 - s2, fma(s2 * mu, -mu, 1.0), big_nu);
+    let root = sqrt(max(rad, 0.0));
+    let p = select(c, c * mu, big_nu);
+    let q = select(nu2 * c, nu_c, big_nu);
+    let tir_extreme = !big_nu & (rad < 0.0);
+
+    let extreme = (eta > 256.0) | (eta < 0.00390625);
+    let num_perp = select(-m, p - root, extreme);
+    let den_perp = select(d_perp, p + root, extreme);
+    let num_par = select(n2m1 * w * f, q - root, extreme);
+    let den_par = select(d_par, q + root, extreme);
+    // A zero denominator comes with a zero numerator (eta = 1 at c = 0, or a cosine whose
+    // square underflows): the ratio is 0 there.
+    let r_perp = select(num_perp / select(den_perp, 1.0, den_perp == 0.0), 0.0, den_perp == 0.0);
+    let r_par = select(num_par / select(den_par, 1.0, den_par == 0.0), 0.0, den_par == 0.0);
+    let tir = (extreme & tir_extreme) | (!extreme & tir_moderate);
+    let reflectance = min(0.5 * (r_perp * r_perp + r_par * r_par), 1.0);
+    return select(reflectance, 1.0, tir);
+}
+
 // Exact unpolarized conductor Fresnel reflectance F = (|r_perp|^2 + |r_par|^2) / 2 for the
 // complex relative IOR N = eta + i k (Born and Wolf, "Principles of Optics", section 14.2), in
 // the Rust kernels' cancellation-free arrangement (fresnel::conductor_fast; r_perp =

@@ -1,9 +1,9 @@
 // brdf: the glTF 2.0 metallic-roughness material, the twins of the Rust module `material`
 // (F0 from Filament's reflectance, the BRDF from dot products with its three diffuse
 // couplings, and glTF's own composition, in the crate's precise and working-precision tiers;
-// `MetallicRoughness` on local-frame directions and its lobe-selection probability). Needs
-// common.wgsl, ggx.wgsl and, for the direction forms, cook_torrance.wgsl (with fresnel.wgsl
-// and beckmann.wgsl). The lobe sampling has no twin yet.
+// `MetallicRoughness` on local-frame directions, its lobe-selection probability, its one-sample
+// MIS sampler and pdf). Needs common.wgsl, ggx.wgsl and, for the direction forms,
+// cook_torrance.wgsl (with fresnel.wgsl and beckmann.wgsl) and sampling.wgsl.
 
 // F0 = 0.16 reflectance^2 (Guy and Agopian 2018, "Physically Based Rendering in Filament",
 // 4.8.3.2).
@@ -175,4 +175,72 @@ fn material_MetallicRoughness_specular_probability(
     let d = (kr.y * base_color_r + kg.y * base_color_g + kb.y * base_color_b) * 0.3333333333333333;
     let p = clamp(s / (s + d), 0.0625, 0.9375);
     return select(p, 1.0, d == 0.0);
+}
+
+// The one-sample MIS pdf (solid angle) of material_MetallicRoughness_sample
+// (material::MetallicRoughness::pdf): P p_spec + (1 - P) p_diff with
+// P = material_MetallicRoughness_specular_probability, p_spec = D_wo(h) / (4 |wo.h|) for
+// h = normalize(wo + wi) (GGX visible normals, Heitz 2018; Walter et al. 2007, eq. 14) and
+// p_diff = max(0, wi.z) / pi; 0 where wo or wi is the zero vector.
+fn material_MetallicRoughness_pdf(
+    base_color_r: f32, base_color_g: f32, base_color_b: f32, metallic: f32, roughness: f32,
+    wo_x: f32, wo_y: f32, wo_z: f32, wi_x: f32, wi_y: f32, wi_z: f32,
+) -> f32 {
+    let p = material_MetallicRoughness_specular_probability(base_color_r, base_color_g,
+        base_color_b, metallic, roughness, wo_x, wo_y, wo_z);
+    let h = brdf_normalize_or_z(vec3<f32>(wo_x + wi_x, wo_y + wi_y, wo_z + wi_z));
+    let alpha = microfacet_alpha_from_perceptual(roughness);
+    let wo_dot_h = fma(wo_x, h.x, fma(wo_y, h.y, wo_z * h.z));
+    // D_wo(h) of sampling_visible_normal_pdf for GGX (wo taken in the upper hemisphere).
+    let p_spec = sampling_reflect_pdf(
+        ggx_Ggx_d_visible(alpha, alpha, wo_x, wo_y, abs(wo_z), h.x, h.y, h.z), wo_dot_h);
+    let p_diff = sampling_cosine_hemisphere_pdf(wi_x, wi_y, wi_z);
+    let zero = ((wo_x == 0.0) & (wo_y == 0.0) & (wo_z == 0.0))
+        | ((wi_x == 0.0) & (wi_y == 0.0) & (wi_z == 0.0));
+    return select(brdf_material_lerp(p_diff, p_spec, p), 0.0, zero);
+}
+
+// Draws wi for the view wo by one-sample lobe selection (material::MetallicRoughness::sample):
+// (wi.x, wi.y, wi.z, pdf) with pdf = material_MetallicRoughness_pdf(wo, wi). u1 (clamped into
+// [0, 1)) picks the lobe and is reused: u1 < P takes the specular lobe with u1 / P, the
+// reflection of wo about a GGX visible normal (sampling_ggx_vndf; Heitz 2018), otherwise
+// (u1 - P) / (1 - P) goes to sampling_cosine_hemisphere. A specular wi below the horizon is
+// returned as drawn, with its pdf.
+fn material_MetallicRoughness_sample(
+    base_color_r: f32, base_color_g: f32, base_color_b: f32, metallic: f32, roughness: f32,
+    wo_x: f32, wo_y: f32, wo_z: f32, u1: f32, u2: f32,
+) -> vec4<f32> {
+    let p = material_MetallicRoughness_specular_probability(base_color_r, base_color_g,
+        base_color_b, metallic, roughness, wo_x, wo_y, wo_z);
+    let uc1 = brdf_clamp_u(u1);
+    let specular = uc1 < p;
+    // P is 1 or at most 15/16: the floor only keeps the unused branch finite at P = 1.
+    let u = select((uc1 - p) / max(1.0 - p, 0.0625), uc1 / p, specular);
+    let alpha = microfacet_alpha_from_perceptual(roughness);
+    let m = brdf_ggx_vndf_normal(alpha, alpha, vec3<f32>(wo_x, wo_y, wo_z), u, u2);
+    let k = 2.0 * fma(wo_x, m.x, fma(wo_y, m.y, wo_z * m.z));
+    let wr = vec3<f32>(m.x * k - wo_x, m.y * k - wo_y, m.z * k - wo_z);
+    let wd = sampling_cosine_hemisphere(u, u2);
+    let wi = select(vec3<f32>(wd.x, wd.y, wd.z), wr, specular);
+    let pdf = material_MetallicRoughness_pdf(base_color_r, base_color_g, base_color_b, metallic,
+        roughness, wo_x, wo_y, wo_z, wi.x, wi.y, wi.z);
+    return vec4<f32>(wi, pdf);
+}
+
+// material_MetallicRoughness_sample with the Monte Carlo weight
+// (material::MetallicRoughness::sample_weighted): (wi.x, wi.y, wi.z, pdf, w_r, w_g, w_b),
+// w = f(wo, wi) max(wi.z, 0) / pdf per channel (material_MetallicRoughness_eval), 0 where the
+// pdf is 0.
+fn material_MetallicRoughness_sample_weighted(
+    base_color_r: f32, base_color_g: f32, base_color_b: f32, metallic: f32, roughness: f32,
+    wo_x: f32, wo_y: f32, wo_z: f32, u1: f32, u2: f32,
+) -> array<f32, 7> {
+    let s = material_MetallicRoughness_sample(base_color_r, base_color_g, base_color_b, metallic,
+        roughness, wo_x, wo_y, wo_z, u1, u2);
+    let f = material_MetallicRoughness_eval(base_color_r, base_color_g, base_color_b, metallic,
+        roughness, wo_x, wo_y, wo_z, s.x, s.y, s.z);
+    // The floor keeps the unused branch finite where the pdf is 0 (below f32's smallest normal
+    // WGSL's x / y promises nothing anyway).
+    let scale = select(0.0, max(s.z, 0.0) / max(s.w, 1.17549435e-38), s.w > 0.0);
+    return array<f32, 7>(s.x, s.y, s.z, s.w, f.x * scale, f.y * scale, f.z * scale);
 }

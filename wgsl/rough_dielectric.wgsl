@@ -1,8 +1,9 @@
 // brdf: the rough dielectric BSDF of Walter et al. 2007, the twins of the Rust module
 // `rough_dielectric`: the generalized half vector, the BSDF (reflection and transmission, from
 // either side, radiance or importance transport) and the pdf of both lobes, over a microfacet
-// model given as a u32 (0 = GGX, 1 = Beckmann) with widths (alpha_x, alpha_y). The samplers
-// have no twins yet. Needs common.wgsl, ggx.wgsl, fresnel.wgsl and beckmann.wgsl.
+// model given as a u32 (0 = GGX, 1 = Beckmann) with widths (alpha_x, alpha_y), and the GGX
+// sampler (the Beckmann sampler, whose visible normals need erf_inv, has no twin). Needs
+// common.wgsl, ggx.wgsl, fresnel.wgsl, beckmann.wgsl and sampling.wgsl.
 
 // (h, |r|^2) for the raw sum r = wi + wo / eta' (eta' > 1) or wi eta' + wo (eta' <= 1), a
 // positive multiple of wo + eta' wi: h = +-normalize(r) with h.z >= 0, (0, 0, 1) where r is the
@@ -187,4 +188,86 @@ fn brdf_rough_dielectric_btdf_ggx(
         brdf_rough_dielectric_cap_mul(dg, brdf_rough_dielectric_cap_mul(abs(o_h), inv_cos)),
         j.x);
     return vec2<f32>(select(0.0, brdf_rough_dielectric_cap_mul(ft, j.y), live), o_h);
+}
+
+// v / |v| with |v|^2 in the order of the Rust V3::dot, or `fallback` where |v|^2 is 0
+// (vec3::V3::normalize_or).
+fn brdf_rough_dielectric_normalize_or(v: vec3<f32>, fallback: vec3<f32>) -> vec3<f32> {
+    let len2 = fma(v.x, v.x, fma(v.y, v.y, v.z * v.z));
+    let ok = len2 > 0.0;
+    let inv = select(0.0, 1.0 / sqrt(len2), ok);
+    return vec3<f32>(select(fallback.x, v.x * inv, ok), select(fallback.y, v.y * inv, ok),
+        select(fallback.z, v.z * inv, ok));
+}
+
+// The refraction of wo through the facet normal m (Walter et al. 2007, eq. 40; the Rust
+// kernel's refract): with c = wo.m, the relative index eta_t = eta (c >= 0) or 1 / eta (c < 0)
+// and n = +-m on wo's side, sin^2_t = (1 - c^2) / eta_t^2 (1 under total internal reflection),
+// wi = normalize(n (|c| - eta_t cos_t) - wo), or -n where that is the zero vector.
+fn brdf_rough_dielectric_refract(wo: vec3<f32>, m: vec3<f32>, eta: f32) -> vec3<f32> {
+    let c0 = fma(wo.x, m.x, fma(wo.y, m.y, wo.z * m.z));
+    let back = c0 < 0.0;
+    let eta_t = select(eta, 1.0 / eta, back);
+    let n = select(m, vec3<f32>(-m.x, -m.y, -m.z), back);
+    let c = min(abs(c0), 1.0);
+    let sin2_i = max((1.0 - c) * (1.0 + c), 0.0);
+    let e2 = eta_t * eta_t;
+    // A product, so that an eta_t^2 that underflows gives total reflection, not 0 / 0.
+    let tir = (sin2_i >= e2) & (sin2_i > 0.0);
+    let sin2_t = min(select(sin2_i / max(e2, 1.17549435e-38), 1.0, tir), 1.0);
+    let cos_t = sqrt(max(1.0 - sin2_t, 0.0));
+    let k = c - min(eta_t, BRDF_F32_MAX) * cos_t;
+    let wi = vec3<f32>(n.x * k - wo.x, n.y * k - wo.y, n.z * k - wo.z);
+    return brdf_rough_dielectric_normalize_or(wi, vec3<f32>(-n.x, -n.y, -n.z));
+}
+
+// Samples the rough dielectric BSDF of a GGX interface: (wi.x, wi.y, wi.z, pdf, weight) with
+// the visible normal m of sampling_ggx_vndf_spherical_cap for sign(wo.z) wo (Heitz 2018,
+// "Sampling the GGX Distribution of Visible Normals"; Dupuy and Benyoub 2023), the reflection
+// 2 (wo.m) m - wo where u0 < F = fresnel_dielectric(wo.m, eta) and the refraction through m
+// otherwise (Walter et al. 2007, section 5.3), pdf = rough_dielectric_pdf(0u, ..., wo, wi, eta)
+// and the weight G2 / G1(wo) = (1 + Lambda(wo)) / (1 + Lambda(wo) + Lambda(wi)), times
+// min(1 / eta', MAX)^2 capped for a refraction in radiance transport (transport 0; importance,
+// 1, takes 1), eta' = eta for wo above the surface, 1 / eta below. G2 / G1 is written pole-free
+// as |i.z| (|o.z| + s_o) / (|i.z| s_o + |o.z| s_i) (as in brdf_sampling_ggx_reflection_parts).
+// A reflection leaving through the other side or a refraction staying on wo's side keeps its
+// direction with pdf 0 and weight 0; eta = 1 gives wi = -wo, pdf the largest finite f32 and
+// weight 1 (the Dirac pass-through). u0, u1, u2 clamped into [0, 1).
+fn rough_dielectric_ggx_sample(
+    alpha_x: f32, alpha_y: f32, wo_x: f32, wo_y: f32, wo_z: f32, eta: f32, u0: f32, u1: f32,
+    u2: f32, transport: u32,
+) -> array<f32, 5> {
+    let wo = vec3<f32>(wo_x, wo_y, wo_z);
+    let wo_up = select(wo, vec3<f32>(-wo_x, -wo_y, -wo_z), wo_z < 0.0);
+    let m = brdf_ggx_vndf_spherical_cap_normal(alpha_x, alpha_y, wo_up, u1, u2);
+    let uc0 = brdf_clamp_u(u0);
+    let o_m = fma(wo_x, m.x, fma(wo_y, m.y, wo_z * m.z));
+    let f_r = fresnel_dielectric(o_m, eta);
+    let k = 2.0 * o_m;
+    let wr = vec3<f32>(m.x * k - wo_x, m.y * k - wo_y, m.z * k - wo_z);
+    let wt = brdf_rough_dielectric_refract(wo, m, eta);
+    // Reflection with probability F (1 under total internal reflection).
+    let choose_r = uc0 < f_r;
+    let wi = select(wt, wr, choose_r);
+    // A live sample: a reflection that stays on wo's side, a refraction that crosses.
+    let same = wo_z * wi.z > 0.0;
+    let cross = wo_z * wi.z < 0.0;
+    let live = (choose_r & same) | (!choose_r & cross);
+    let p = rough_dielectric_pdf(0u, alpha_x, alpha_y, wo_x, wo_y, wo_z, wi.x, wi.y, wi.z, eta);
+    let o = brdf_ggx_smith(alpha_x, alpha_y, wo);
+    let i = brdf_ggx_smith(alpha_x, alpha_y, wi);
+    // The floor keeps the unused branch finite where both cosines are 0.
+    let ratio = i.x * (o.x + o.z) / max(i.x * o.z + o.x * i.z, 1.17549435e-38);
+    // (1 / eta')^2 capped, as in brdf_rough_dielectric_jacobian.
+    let r = min(1.0 / select(eta, 1.0 / eta, wo_z < 0.0), BRDF_F32_MAX);
+    let rc = min(r, 18446742974197923840.0);
+    let s = select(select(rc * rc, BRDF_F32_MAX, r >= 18446744073709551616.0), 1.0,
+        transport == 1u);
+    let w = select(brdf_rough_dielectric_cap_mul(ratio, s), ratio, choose_r);
+    let keep = live & (p > 0.0);
+    // eta = 1: the Dirac pass-through.
+    let matched = (eta == 1.0) & !((wo_x == 0.0) & (wo_y == 0.0) & (wo_z == 0.0));
+    return array<f32, 5>(select(wi.x, -wo_x, matched), select(wi.y, -wo_y, matched),
+        select(wi.z, -wo_z, matched), select(select(0.0, p, keep), BRDF_F32_MAX, matched),
+        select(select(0.0, w, keep), 1.0, matched));
 }

@@ -5,9 +5,7 @@
 // common.wgsl, ggx.wgsl and beckmann.wgsl. The Beckmann samplers (which need erf_inv) have no
 // twin yet.
 //
-// Angles: WGSL promises sin and cos only on [-pi, pi] (absolute error 2^-11 there), so
-// cos(2 pi u) and sin(2 pi u) are taken as -cos(t) and -sin(t) with t = (2 u - 1) pi', pi' the
-// f32 just below pi, which keeps |t| <= pi.
+// Angles: cos(2 pi u) and sin(2 pi u) through brdf_cos_sin_2pi (common.wgsl).
 
 // The pdf max(0, w.z) / pi of cosine-weighted hemisphere sampling (Pharr, Jakob, Humphreys,
 // "Physically Based Rendering", 4th ed., A.5.3).
@@ -21,18 +19,6 @@ fn sampling_cosine_hemisphere_pdf(w_x: f32, w_y: f32, w_z: f32) -> f32 {
 fn sampling_reflect_pdf(pdf_m: f32, v_dot_h: f32) -> f32 {
     let den = 4.0 * abs(v_dot_h);
     return select(0.0, min(pdf_m / den, BRDF_F32_MAX), den > 0.0);
-}
-
-// u clamped to [0, 1 - 2^-24] (sampling::clamp_u): a sample of exactly 1 maps where 1 - 2^-24
-// does.
-fn brdf_clamp_u(u: f32) -> f32 {
-    return clamp(u, 0.0, 0.99999994);
-}
-
-// (cos(2 pi u), sin(2 pi u)) through arguments in [-pi, pi] (see the top of this file).
-fn brdf_cos_sin_2pi(u: f32) -> vec2<f32> {
-    let t = fma(2.0, u, -1.0) * 3.1415925;
-    return vec2<f32>(-cos(t), -sin(t));
 }
 
 // v / |v|, or (0, 0, 1) for the zero vector (vec3::V3::normalize_or with the normal as the
@@ -84,9 +70,17 @@ fn brdf_unstretch(h: vec3<f32>, ax: f32, ay: f32) -> vec3<f32> {
 fn sampling_ggx_vndf(
     alpha_x: f32, alpha_y: f32, wo_x: f32, wo_y: f32, wo_z: f32, u1: f32, u2: f32,
 ) -> vec4<f32> {
+    let m = brdf_ggx_vndf_normal(alpha_x, alpha_y, vec3<f32>(wo_x, wo_y, wo_z), u1, u2);
+    let pdf = ggx_Ggx_d_visible(alpha_x, alpha_y, wo_x, wo_y, abs(wo_z), m.x, m.y, m.z);
+    return vec4<f32>(m, pdf);
+}
+
+// The normal of sampling_ggx_vndf without its pdf (for the samplers that weigh their sample by
+// another density).
+fn brdf_ggx_vndf_normal(alpha_x: f32, alpha_y: f32, wo: vec3<f32>, u1: f32, u2: f32) -> vec3<f32> {
     let ax = brdf_clamp_alpha(alpha_x);
     let ay = brdf_clamp_alpha(alpha_y);
-    let vh = brdf_stretch(vec3<f32>(wo_x, wo_y, wo_z), ax, ay);
+    let vh = brdf_stretch(wo, ax, ay);
     let len2 = fma(vh.x, vh.x, vh.y * vh.y);
     let has_tangent = len2 > 0.0;
     let inv_len = select(0.0, 1.0 / sqrt(len2), has_tangent);
@@ -101,9 +95,22 @@ fn sampling_ggx_vndf(
     let lift = sqrt(max(1.0 - p1 * p1 - p2 * p2, 0.0));
     let nh = vec3<f32>(t1.x * p1 + t2.x * p2 + vh.x * lift, t1.y * p1 + t2.y * p2 + vh.y * lift,
         t1.z * p1 + t2.z * p2 + vh.z * lift);
-    let m = brdf_unstretch(nh, ax, ay);
-    let pdf = ggx_Ggx_d_visible(alpha_x, alpha_y, wo_x, wo_y, abs(wo_z), m.x, m.y, m.z);
-    return vec4<f32>(m, pdf);
+    return brdf_unstretch(nh, ax, ay);
+}
+
+// The normal of sampling_ggx_vndf_spherical_cap without its pdf (for the samplers that weigh
+// their sample by another density).
+fn brdf_ggx_vndf_spherical_cap_normal(
+    alpha_x: f32, alpha_y: f32, wo: vec3<f32>, u1: f32, u2: f32,
+) -> vec3<f32> {
+    let ax = brdf_clamp_alpha(alpha_x);
+    let ay = brdf_clamp_alpha(alpha_y);
+    let v = brdf_stretch(wo, ax, ay);
+    let cs = brdf_cos_sin_2pi(brdf_clamp_u(u1));
+    let z = fma(1.0 - brdf_clamp_u(u2), 1.0 + v.z, -v.z);
+    let sin_theta = sqrt(max(1.0 - z * z, 0.0));
+    let h = vec3<f32>(sin_theta * cs.x + v.x, sin_theta * cs.y + v.y, z + v.z);
+    return brdf_unstretch(h, ax, ay);
 }
 
 // GGX visible-normal sampling by spherical caps (Dupuy and Benyoub 2023, "Sampling Visible GGX
@@ -112,14 +119,8 @@ fn sampling_ggx_vndf(
 fn sampling_ggx_vndf_spherical_cap(
     alpha_x: f32, alpha_y: f32, wo_x: f32, wo_y: f32, wo_z: f32, u1: f32, u2: f32,
 ) -> vec4<f32> {
-    let ax = brdf_clamp_alpha(alpha_x);
-    let ay = brdf_clamp_alpha(alpha_y);
-    let v = brdf_stretch(vec3<f32>(wo_x, wo_y, wo_z), ax, ay);
-    let cs = brdf_cos_sin_2pi(brdf_clamp_u(u1));
-    let z = fma(1.0 - brdf_clamp_u(u2), 1.0 + v.z, -v.z);
-    let sin_theta = sqrt(max(1.0 - z * z, 0.0));
-    let h = vec3<f32>(sin_theta * cs.x + v.x, sin_theta * cs.y + v.y, z + v.z);
-    let m = brdf_unstretch(h, ax, ay);
+    let m = brdf_ggx_vndf_spherical_cap_normal(alpha_x, alpha_y, vec3<f32>(wo_x, wo_y, wo_z),
+        u1, u2);
     let pdf = ggx_Ggx_d_visible(alpha_x, alpha_y, wo_x, wo_y, abs(wo_z), m.x, m.y, m.z);
     return vec4<f32>(m, pdf);
 }

@@ -14,6 +14,16 @@
 //!   is NaN. Where a constructor argument's name clashes with another argument, all of that
 //!   parameter's constructor arguments are prefixed with the parameter's name (`hable`'s
 //!   `c` and `p_c`);
+//! - a type with optional extensions ([`BUILDERS`]: `layers::layered::Layered`) is its
+//!   constructor's arguments followed by the parameters of each of its listed builders
+//!   (`with_sheen`, `with_clearcoat`, ...), in the order they are applied, flattened the same
+//!   way and named after the builder: prefixed with its name less `with_` unless already so
+//!   named (`with_sheen(color, roughness)` is `sheen_color_r`, ..., `sheen_roughness`;
+//!   `with_clearcoat(clearcoat, roughness)` is `clearcoat`, `clearcoat_roughness`;
+//!   `with_volume(volume)` is `volume_thickness`, ...). Every builder is applied: an extension
+//!   is off at its glTF default, the value that leaves the material bit for bit as without it
+//!   (sheen colour 0, clearcoat 0, anisotropy strength 0, iridescence factor 0, transmission 0,
+//!   volume thickness 0: thin-walled);
 //! - a parameter generic over `Microfacet` (`cook_torrance::eval`'s `m`, `sampling::d_cos_pdf`'s
 //!   `dist`) is `model` ([`MODEL`]: 0 = `ggx::Ggx`, 1 = `beckmann::Beckmann`) followed by the
 //!   shared constructor arguments `alpha_x`, `alpha_y`;
@@ -488,6 +498,24 @@ pub const CONSTRUCTORS: &[(&str, &str)] = &[
     ("tonemap::UchimuraParams", "{fields}"),
 ];
 
+/// The builders of a type with optional extensions, in the order the kernels apply them:
+/// where such a type stands for a parameter, its constructor's arguments ([`CONSTRUCTORS`])
+/// are followed by each builder's parameters, prefixed with the builder's name less `with_`
+/// unless already so named (module docs). The type's other builders (a layer's geometry such
+/// as the coat normal, the energy compensation switch) are listed with their reason in
+/// `cli/tests/cli/drift.rs`.
+pub const BUILDERS: &[(&str, &[&str])] = &[(
+    "layers::layered::Layered",
+    &[
+        "with_sheen",
+        "with_clearcoat",
+        "with_anisotropy",
+        "with_iridescence",
+        "with_transmission",
+        "with_volume",
+    ],
+)];
+
 /// The `model` argument of kernels generic over `Microfacet`.
 pub const MODEL: Domain = Domain::choice(2, "0 = ggx::Ggx, 1 = beckmann::Beckmann");
 /// The `transport` argument of the rough dielectric (`rough_dielectric::Transport`).
@@ -823,6 +851,18 @@ fn built<P, T: Real, const N: usize>(
     f: impl FnOnce(P) -> [T; N],
 ) -> [T; N] {
     p.map_or_else(|_| nan(), f)
+}
+
+/// The layered material of the rows' 22 material arguments (the base, then every extension of
+/// [`BUILDERS`] in its order; each is off at its glTF default).
+fn layered<T: Real>(a: [T; 22]) -> Result<Layered<T>, ParamError> {
+    Ok(Layered::new(v3(a[0], a[1], a[2]), a[3], a[4])?
+        .with_sheen(v3(a[5], a[6], a[7]), a[8])?
+        .with_clearcoat(a[9], a[10])?
+        .with_anisotropy(a[11], a[12])?
+        .with_iridescence(a[13], ThinFilm::new(a[14], a[15])?)?
+        .with_transmission(a[16])?
+        .with_volume(Volume::new(a[17], v3(a[18], a[19], a[20]), a[21])?))
 }
 
 /// The outputs of choice `k` in the lanes where `x` equals `k`, for each of `n` choices; NaN
@@ -3690,18 +3730,46 @@ pub static KERNELS: &[Kernel] = &[
     // ---------------------------------------------------------------- layers::layered
     kernel!(
         "layers::layered::Layered::eval",
-        "Layered glTF material (sheen, clearcoat, anisotropy over metallic-roughness), RGB",
+        "Layered glTF material (sheen, clearcoat, anisotropy, iridescence, transmission, volume over \
+         metallic-roughness), RGB",
         [base_color_r: Domain::UNIT, base_color_g: Domain::UNIT, base_color_b: Domain::UNIT,
          metallic: Domain::UNIT, roughness: Domain::UNIT,
+         sheen_color_r: Domain::UNIT, sheen_color_g: Domain::UNIT, sheen_color_b: Domain::UNIT,
+         sheen_roughness: Domain::UNIT, clearcoat: Domain::UNIT,
+         clearcoat_roughness: Domain::UNIT, anisotropy_strength: Domain::UNIT,
+         anisotropy_rotation: Domain::FINITE, iridescence_factor: Domain::UNIT,
+         iridescence_thickness: FILM_THICKNESS, iridescence_ior: FILM_IOR,
+         transmission: Domain::UNIT, volume_thickness: Domain::NONNEG,
+         volume_attenuation_color_r: Domain::UNIT, volume_attenuation_color_g: Domain::UNIT,
+         volume_attenuation_color_b: Domain::UNIT, volume_attenuation_distance: ETA,
          wo_x: Domain::DIR, wo_y: Domain::DIR, wo_z: Domain::DIR,
          wi_x: Domain::DIR, wi_y: Domain::DIR, wi_z: Domain::DIR]
             -> [f_r: Domain::NONNEG, f_g: Domain::NONNEG, f_b: Domain::NONNEG],
         built(
-            Layered::new(
-                v3(base_color_r, base_color_g, base_color_b),
+            layered([
+                base_color_r,
+                base_color_g,
+                base_color_b,
                 metallic,
                 roughness,
-            ),
+                sheen_color_r,
+                sheen_color_g,
+                sheen_color_b,
+                sheen_roughness,
+                clearcoat,
+                clearcoat_roughness,
+                anisotropy_strength,
+                anisotropy_rotation,
+                iridescence_factor,
+                iridescence_thickness,
+                iridescence_ior,
+                transmission,
+                volume_thickness,
+                volume_attenuation_color_r,
+                volume_attenuation_color_g,
+                volume_attenuation_color_b,
+                volume_attenuation_distance,
+            ]),
             |m| o3(m.eval(v3(wo_x, wo_y, wo_z), v3(wi_x, wi_y, wi_z))),
         )
     ),
@@ -3710,14 +3778,41 @@ pub static KERNELS: &[Kernel] = &[
         "Lobe-selection probabilities (coat, specular, cosine) of the layered material",
         [base_color_r: Domain::UNIT, base_color_g: Domain::UNIT, base_color_b: Domain::UNIT,
          metallic: Domain::UNIT, roughness: Domain::UNIT,
+         sheen_color_r: Domain::UNIT, sheen_color_g: Domain::UNIT, sheen_color_b: Domain::UNIT,
+         sheen_roughness: Domain::UNIT, clearcoat: Domain::UNIT,
+         clearcoat_roughness: Domain::UNIT, anisotropy_strength: Domain::UNIT,
+         anisotropy_rotation: Domain::FINITE, iridescence_factor: Domain::UNIT,
+         iridescence_thickness: FILM_THICKNESS, iridescence_ior: FILM_IOR,
+         transmission: Domain::UNIT, volume_thickness: Domain::NONNEG,
+         volume_attenuation_color_r: Domain::UNIT, volume_attenuation_color_g: Domain::UNIT,
+         volume_attenuation_color_b: Domain::UNIT, volume_attenuation_distance: ETA,
          wo_x: Domain::DIR, wo_y: Domain::DIR, wo_z: Domain::DIR]
             -> [p_coat: Domain::UNIT, p_spec: Domain::UNIT, p_cos: Domain::UNIT],
         built(
-            Layered::new(
-                v3(base_color_r, base_color_g, base_color_b),
+            layered([
+                base_color_r,
+                base_color_g,
+                base_color_b,
                 metallic,
                 roughness,
-            ),
+                sheen_color_r,
+                sheen_color_g,
+                sheen_color_b,
+                sheen_roughness,
+                clearcoat,
+                clearcoat_roughness,
+                anisotropy_strength,
+                anisotropy_rotation,
+                iridescence_factor,
+                iridescence_thickness,
+                iridescence_ior,
+                transmission,
+                volume_thickness,
+                volume_attenuation_color_r,
+                volume_attenuation_color_g,
+                volume_attenuation_color_b,
+                volume_attenuation_distance,
+            ]),
             |m| o3(m.lobe_probabilities(v3(wo_x, wo_y, wo_z))),
         )
     ),
@@ -3726,15 +3821,42 @@ pub static KERNELS: &[Kernel] = &[
         "One-sample mixture pdf of the layered material, Heitz 2018",
         [base_color_r: Domain::UNIT, base_color_g: Domain::UNIT, base_color_b: Domain::UNIT,
          metallic: Domain::UNIT, roughness: Domain::UNIT,
+         sheen_color_r: Domain::UNIT, sheen_color_g: Domain::UNIT, sheen_color_b: Domain::UNIT,
+         sheen_roughness: Domain::UNIT, clearcoat: Domain::UNIT,
+         clearcoat_roughness: Domain::UNIT, anisotropy_strength: Domain::UNIT,
+         anisotropy_rotation: Domain::FINITE, iridescence_factor: Domain::UNIT,
+         iridescence_thickness: FILM_THICKNESS, iridescence_ior: FILM_IOR,
+         transmission: Domain::UNIT, volume_thickness: Domain::NONNEG,
+         volume_attenuation_color_r: Domain::UNIT, volume_attenuation_color_g: Domain::UNIT,
+         volume_attenuation_color_b: Domain::UNIT, volume_attenuation_distance: ETA,
          wo_x: Domain::DIR, wo_y: Domain::DIR, wo_z: Domain::DIR,
          wi_x: Domain::DIR, wi_y: Domain::DIR, wi_z: Domain::DIR]
             -> [pdf: Domain::NONNEG],
         built(
-            Layered::new(
-                v3(base_color_r, base_color_g, base_color_b),
+            layered([
+                base_color_r,
+                base_color_g,
+                base_color_b,
                 metallic,
                 roughness,
-            ),
+                sheen_color_r,
+                sheen_color_g,
+                sheen_color_b,
+                sheen_roughness,
+                clearcoat,
+                clearcoat_roughness,
+                anisotropy_strength,
+                anisotropy_rotation,
+                iridescence_factor,
+                iridescence_thickness,
+                iridescence_ior,
+                transmission,
+                volume_thickness,
+                volume_attenuation_color_r,
+                volume_attenuation_color_g,
+                volume_attenuation_color_b,
+                volume_attenuation_distance,
+            ]),
             |m| [m.pdf(v3(wo_x, wo_y, wo_z), v3(wi_x, wi_y, wi_z))],
         )
     ),
@@ -3743,16 +3865,43 @@ pub static KERNELS: &[Kernel] = &[
         "Layered material sample by lobe selection, with its pdf, Heitz 2018",
         [base_color_r: Domain::UNIT, base_color_g: Domain::UNIT, base_color_b: Domain::UNIT,
          metallic: Domain::UNIT, roughness: Domain::UNIT,
+         sheen_color_r: Domain::UNIT, sheen_color_g: Domain::UNIT, sheen_color_b: Domain::UNIT,
+         sheen_roughness: Domain::UNIT, clearcoat: Domain::UNIT,
+         clearcoat_roughness: Domain::UNIT, anisotropy_strength: Domain::UNIT,
+         anisotropy_rotation: Domain::FINITE, iridescence_factor: Domain::UNIT,
+         iridescence_thickness: FILM_THICKNESS, iridescence_ior: FILM_IOR,
+         transmission: Domain::UNIT, volume_thickness: Domain::NONNEG,
+         volume_attenuation_color_r: Domain::UNIT, volume_attenuation_color_g: Domain::UNIT,
+         volume_attenuation_color_b: Domain::UNIT, volume_attenuation_distance: ETA,
          wo_x: Domain::DIR, wo_y: Domain::DIR, wo_z: Domain::DIR, u1: Domain::SAMPLE,
          u2: Domain::SAMPLE]
             -> [wi_x: Domain::DIR_OUT, wi_y: Domain::DIR_OUT, wi_z: Domain::DIR_OUT,
                 pdf: Domain::NONNEG],
         built(
-            Layered::new(
-                v3(base_color_r, base_color_g, base_color_b),
+            layered([
+                base_color_r,
+                base_color_g,
+                base_color_b,
                 metallic,
                 roughness,
-            ),
+                sheen_color_r,
+                sheen_color_g,
+                sheen_color_b,
+                sheen_roughness,
+                clearcoat,
+                clearcoat_roughness,
+                anisotropy_strength,
+                anisotropy_rotation,
+                iridescence_factor,
+                iridescence_thickness,
+                iridescence_ior,
+                transmission,
+                volume_thickness,
+                volume_attenuation_color_r,
+                volume_attenuation_color_g,
+                volume_attenuation_color_b,
+                volume_attenuation_distance,
+            ]),
             |m| o4(m.sample(v3(wo_x, wo_y, wo_z), u1, u2)),
         )
     ),

@@ -359,16 +359,6 @@ pub const NO_TWIN: &[(&str, &str)] = &[
         "a tangent frame of its normal: shaders build theirs from the mesh's tangents",
     ),
     (
-        "cook_torrance::ggx_dielectric_fast",
-        "not written yet: composes fresnel::dielectric_fast, which has no twin yet \
-         (cook_torrance_ggx_dielectric is already a working-precision shader form)",
-    ),
-    (
-        "fresnel::dielectric_fast",
-        "not written yet: fresnel_dielectric (the twin of fresnel::dielectric) is already this \
-         working-precision form, without its cancellation-free g2 and W near c = 1",
-    ),
-    (
         "fresnel::average_dielectric",
         "a numerical integral evaluated in f64 only; fresnel_average_dielectric_fit is its \
          shader form",
@@ -376,36 +366,6 @@ pub const NO_TWIN: &[(&str, &str)] = &[
     (
         "tonemap::ev100_from_camera",
         "camera exposure from f64 settings, computed once on the CPU, not per pixel",
-    ),
-    (
-        "diffuse::eon_cltc_sample",
-        "a sampler: the samplers have no twins yet",
-    ),
-    (
-        "diffuse::eon_cltc_pdf",
-        "a sampler's pdf: with the samplers",
-    ),
-    (
-        "diffuse::eon_sample",
-        "a sampler: the samplers have no twins yet",
-    ),
-    ("diffuse::eon_pdf", "a sampler's pdf: with the samplers"),
-    (
-        "diffuse::Eon::sample",
-        "a sampler: the samplers have no twins yet",
-    ),
-    ("diffuse::Eon::pdf", "a sampler's pdf: with the samplers"),
-    (
-        "material::MetallicRoughness::pdf",
-        "a sampler's pdf: with the samplers",
-    ),
-    (
-        "material::MetallicRoughness::sample",
-        "a sampler: the samplers have no twins yet",
-    ),
-    (
-        "material::MetallicRoughness::sample_weighted",
-        "a sampler: the samplers have no twins yet",
     ),
     (
         "sampling::",
@@ -438,12 +398,9 @@ pub const NO_TWIN: &[(&str, &str)] = &[
          them itself from its own material inputs",
     ),
     (
-        "rough_dielectric::ggx_sample",
-        "a sampler: the samplers have no twins yet",
-    ),
-    (
         "rough_dielectric::beckmann_sample",
-        "a sampler: the samplers have no twins yet",
+        "draws its facet normal with sampling::beckmann_vndf, whose erf_inv (a Newton \
+         polish) has no twin",
     ),
 ];
 

@@ -17,7 +17,8 @@
 //! (one value per shading point, energy kept when the coat is smooth, where n.v ~ v.h). The
 //! Khronos sample viewer attenuates the base by F_coat(n_c.v) as well, but evaluates the coat
 //! lobe itself with F_coat(v.h) (Appendix B's specular term). Filament and three.js do the
-//! same as the viewer. [`layer`] takes the attenuating Fresnel value from the caller, so both
+//! same as the viewer; three.js's Fresnel there is Karis's spherical-Gaussian fit
+//! 2^((-5.55473 c - 6.98316) c) of (1 - c)^5, up to 6.9% from Schlick's at F0 = 0.04. [`layer`] takes the attenuating Fresnel value from the caller, so both
 //! are one call: `layer(base, coat, clearcoat, fresnel(n_dot_v))` (the extension and the
 //! engines) or `fresnel(v_dot_h)` (a per-light attenuation that keeps the layer reciprocal
 //! when the base is). With F_coat(n.v) the layered BRDF is not reciprocal; the coat lobe is.

@@ -379,7 +379,8 @@ pub fn albedo_fit_materialx<T: Real>(n_dot_v: T, alpha: T) -> T {
 /// -- --nocapture` and bounded there (0.55).
 ///
 /// Source: three.js, `src/renderers/shaders/ShaderChunk/lights_physical_pars_fragment.glsl.js`,
-/// `IBLSheenBRDF` (releases r130 to r180).
+/// `IBLSheenBRDF` (the same fit from r130 on; read at commit
+/// 12f550e0f44f68e5b6c946dd242ee08e42d209e4).
 #[inline]
 #[must_use]
 pub fn albedo_fit_threejs<T: Real>(n_dot_v: T, roughness: T) -> T {

@@ -1,10 +1,13 @@
 //! Shared by the test binaries: a deterministic random stream and a chi-square goodness-of-fit
-//! test of a direction sampler against its pdf. Each test binary compiles this module on its
+//! test of a direction sampler against its pdf (over the hemisphere here, over the whole sphere
+//! in [`sphere`]). Each test binary compiles this module on its
 //! own and uses part of it.
 #![allow(dead_code)]
 
 use brdf::V3;
 use glam::DVec3;
+
+pub mod sphere;
 
 /// SplitMix64 (Steele, Lea, Flood 2014): a deterministic stream, so the chi-square statistic
 /// below is the same on every run and machine.

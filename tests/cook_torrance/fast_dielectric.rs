@@ -7,9 +7,10 @@
 use brdf::cook_torrance;
 use brdf::microfacet::Alpha;
 use brdf::wide::{f32x8, f64x4};
-use brdf::{Cosines, Real, V3};
+use brdf::{Cosines, Real};
 
 use crate::common::Rng;
+use crate::fast_check::{random_dir, within_bound};
 
 /// The relative bounds `ggx_dielectric_fast`'s docs state (f32, f64).
 const BOUND_REL: [f64; 2] = [2.5e-6, 4e-15];
@@ -19,19 +20,9 @@ const BOUND_REL: [f64; 2] = [2.5e-6, 4e-15];
 /// of 1.
 fn inputs(n: usize) -> Vec<[f64; 6]> {
     let mut rng = Rng(0xd1e1_ec7c);
-    let dir = |rng: &mut Rng| {
-        let z = if rng.next_f64() < 0.5 {
-            libm::pow(10.0, -6.0 * rng.next_f64())
-        } else {
-            rng.next_f64()
-        };
-        let phi = core::f64::consts::TAU * rng.next_f64();
-        let s = ((1.0 - z) * (1.0 + z)).sqrt();
-        V3::new(s * phi.cos(), s * phi.sin(), z)
-    };
     (0..n)
         .map(|_| {
-            let (v, l) = (dir(&mut rng), dir(&mut rng));
+            let (v, l) = (random_dir(&mut rng), random_dir(&mut rng));
             let h = (v + l).normalize();
             let alpha = libm::pow(10.0, -4.0 * rng.next_f64());
             let eta = if rng.next_f64() < 0.8 {
@@ -59,38 +50,27 @@ fn eval<T: Real>(x: [f64; 6], fast: bool) -> T {
     }
 }
 
-fn rel(x: f64, r: f64) -> f64 {
-    if x == r { 0.0 } else { (x - r).abs() / r.abs() }
-}
-
 #[test]
 fn fast_tier_within_its_bound_of_the_exact_tier() {
-    let n = std::env::var("BRDF_FAST_TIER_POINTS")
-        .ok()
-        .and_then(|s| s.parse().ok())
-        .unwrap_or(400_000);
-    let (mut w32, mut w64) = (0.0f64, 0.0f64);
-    for x in inputs(n) {
-        let (p, q) = (eval::<f32>(x, true), eval::<f32>(x, false));
-        let (p64, q64) = (eval::<f64>(x, true), eval::<f64>(x, false));
-        assert!(
-            p.is_finite() && p >= 0.0 && p64.is_finite() && p64 >= 0.0,
-            "{x:?}"
-        );
-        if x[5] < 1.0 && (x[5] as f32) < 1.0 {
-            continue;
-        }
-        // Results below f32's smallest normal carry an absolute, not relative, error.
-        if q.abs() >= f32::MIN_POSITIVE {
-            w32 = w32.max(rel(f64::from(p), f64::from(q)));
-        }
-        w64 = w64.max(rel(p64, q64));
-    }
-    println!(
-        "rough dielectric, fast tier against the exact tier over {n} points (eta >= 1): relative {w32:.2e} (f32), {w64:.2e} (f64)"
+    within_bound(
+        "rough dielectric",
+        " (eta >= 1)",
+        BOUND_REL,
+        inputs,
+        |&x, worst| {
+            let (p, q) = (eval::<f32>(x, true), eval::<f32>(x, false));
+            let (p64, q64) = (eval::<f64>(x, true), eval::<f64>(x, false));
+            assert!(
+                p.is_finite() && p >= 0.0 && p64.is_finite() && p64 >= 0.0,
+                "{x:?}"
+            );
+            if x[5] < 1.0 && (x[5] as f32) < 1.0 {
+                return;
+            }
+            worst.f32(p, q);
+            worst.f64(p64, q64);
+        },
     );
-    assert!(w32 <= BOUND_REL[0], "f32 {w32:e}");
-    assert!(w64 <= BOUND_REL[1], "f64 {w64:e}");
 }
 
 #[test]

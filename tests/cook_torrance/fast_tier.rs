@@ -11,6 +11,7 @@ use brdf::wide::{f32x8, f64x4};
 use brdf::{Cosines, Real, V3};
 
 use crate::common::Rng;
+use crate::fast_check::{random_dir, within_bound};
 
 /// The relative bounds `ggx_conductor_rgb_fast`'s docs state (f32, f64).
 const BOUND_REL: [f64; 2] = [1.5e-6, 2.6e-15];
@@ -20,16 +21,6 @@ const BOUND_REL: [f64; 2] = [1.5e-6, 2.6e-15];
 /// half the time, log-uniform over [1e-3, 1e3] otherwise, kept where k >= 0.1 or eta >= 1.
 fn inputs(n: usize) -> Vec<([f64; 5], [[f64; 3]; 2])> {
     let mut rng = Rng(0xc0d0_c7a5);
-    let dir = |rng: &mut Rng| {
-        let z = if rng.next_f64() < 0.5 {
-            libm::pow(10.0, -6.0 * rng.next_f64())
-        } else {
-            rng.next_f64()
-        };
-        let phi = core::f64::consts::TAU * rng.next_f64();
-        let s = ((1.0 - z) * (1.0 + z)).sqrt();
-        V3::new(s * phi.cos(), s * phi.sin(), z)
-    };
     const METALS: [([f64; 3], [f64; 3]); 3] = [
         ([0.18, 0.42, 1.37], [3.42, 2.35, 1.77]), // gold
         ([2.76, 2.54, 2.27], [3.84, 3.43, 3.04]), // iron
@@ -37,7 +28,7 @@ fn inputs(n: usize) -> Vec<([f64; 5], [[f64; 3]; 2])> {
     ];
     let mut out = Vec::with_capacity(n);
     while out.len() < n {
-        let (v, l) = (dir(&mut rng), dir(&mut rng));
+        let (v, l) = (random_dir(&mut rng), random_dir(&mut rng));
         let h = (v + l).normalize();
         let alpha = libm::pow(10.0, -4.0 * rng.next_f64());
         let ior = if rng.next_f64() < 0.5 {
@@ -78,37 +69,25 @@ fn eval<T: Real>(x: [f64; 5], ior: [[f64; 3]; 2], fast: bool) -> V3<T> {
     }
 }
 
-fn rel(x: f64, r: f64) -> f64 {
-    if x == r { 0.0 } else { (x - r).abs() / r.abs() }
-}
-
 #[test]
 fn fast_tier_within_its_bound_of_the_exact_tier() {
-    let n = std::env::var("BRDF_FAST_TIER_POINTS")
-        .ok()
-        .and_then(|s| s.parse().ok())
-        .unwrap_or(400_000);
-    let pts = inputs(n);
-    let (mut w32, mut w64) = (0.0f64, 0.0f64);
-    for &(x, ior) in &pts {
-        let (a, b) = (eval::<f32>(x, ior, true), eval::<f32>(x, ior, false));
-        for (p, q) in a.to_array().into_iter().zip(b.to_array()) {
-            assert!(p.is_finite() && q.is_finite(), "{x:?} {ior:?}");
-            // Results below f32's smallest normal carry an absolute, not relative, error.
-            if q.abs() >= f32::MIN_POSITIVE {
-                w32 = w32.max(rel(f64::from(p), f64::from(q)));
+    within_bound(
+        "rough conductor",
+        "",
+        BOUND_REL,
+        inputs,
+        |&(x, ior), worst| {
+            let (a, b) = (eval::<f32>(x, ior, true), eval::<f32>(x, ior, false));
+            for (p, q) in a.to_array().into_iter().zip(b.to_array()) {
+                assert!(p.is_finite() && q.is_finite(), "{x:?} {ior:?}");
+                worst.f32(p, q);
             }
-        }
-        let (a, b) = (eval::<f64>(x, ior, true), eval::<f64>(x, ior, false));
-        for (p, q) in a.to_array().into_iter().zip(b.to_array()) {
-            w64 = w64.max(rel(p, q));
-        }
-    }
-    println!(
-        "rough conductor, fast tier against the exact tier over {n} points: relative {w32:.2e} (f32), {w64:.2e} (f64)"
+            let (a, b) = (eval::<f64>(x, ior, true), eval::<f64>(x, ior, false));
+            for (p, q) in a.to_array().into_iter().zip(b.to_array()) {
+                worst.f64(p, q);
+            }
+        },
     );
-    assert!(w32 <= BOUND_REL[0], "f32 {w32:e}");
-    assert!(w64 <= BOUND_REL[1], "f64 {w64:e}");
 }
 
 #[test]

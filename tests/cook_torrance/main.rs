@@ -3,6 +3,7 @@
 //! <module>::` runs one module. Each module keeps its own feature gate.
 //!
 //! - `energy`: energy and reciprocity, by the public integrators
+//! - `fast_check`: the random directions and relative-error sweep both fast tiers' tests share
 //! - `fast_dielectric`: the working-precision rough dielectric reflection against the exact tier
 //! - `fast_tier`: the working-precision rough conductor against the exact tier
 //! - `local`: the rough conductor from the directions, both tiers, against the f64 route
@@ -12,6 +13,7 @@
 mod common;
 
 mod energy;
+mod fast_check;
 mod fast_dielectric;
 mod fast_tier;
 mod local;

@@ -256,6 +256,14 @@ fn layered_rows<T: Real>(t: &mut Vec<Kernel<T>>) {
         )
         .unwrap(),
     ));
+    #[cfg(feature = "transmission")]
+    {
+        let thin = all.with_transmission(s(0.8)).unwrap();
+        let volume =
+            brdf::transmission::Volume::new(s(0.01), V3::new(s(0.9), s(0.8), s(0.7)), s(1.0));
+        variants.push(("thin-walled transmission", thin));
+        variants.push(("volumetric transmission", thin.with_volume(volume.unwrap())));
+    }
     for (label, m) in variants {
         let dirs = || [v("wo", WO), v("wi", WI)].concat();
         t.push(k(

@@ -83,3 +83,83 @@ fn bent_reflection_matches_the_sample_viewer() {
     println!("bent reflection vs sample viewer: max distance {worst:.2e}");
     assert!(worst < 2e-6, "{worst}");
 }
+
+/// three.js's anisotropic lobe (WebGPU node materials), transcribed in f32:
+/// - `D_GGX_Anisotropic` and `V_GGX_SmithCorrelated_Anisotropic`,
+///   `src/nodes/functions/BSDF/*.js` at commit 011d3c8d632cbe7c61f094f8daf35af4761521ae;
+/// - `BRDF_GGX.js` (commit 343d19d7cdffa8341881d107b9bbcf10771ae42f) passes alphaB = alpha =
+///   roughness^2 and the tangent's alphaT;
+/// - `src/materials/nodes/MeshPhysicalNodeMaterial.js` (commit
+///   2121d08351df31cb74606fe6b2802287e1d72a88) sets alphaT = mix(roughness^2, 1,
+///   anisotropy^2), the strength saturated.
+mod threejs {
+    const RECIPROCAL_PI: f32 = 1.0 / core::f32::consts::PI;
+    const EPSILON: f32 = 1e-6;
+
+    pub fn alpha_t(roughness: f32, anisotropy: f32) -> f32 {
+        let a = roughness * roughness;
+        let s = anisotropy.clamp(0.0, 1.0);
+        let t = s * s;
+        a * (1.0 - t) + t
+    }
+
+    pub fn d(alpha_t: f32, alpha_b: f32, nh: f32, th: f32, bh: f32) -> f32 {
+        let a2 = alpha_t * alpha_b;
+        let (x, y, z) = (alpha_b * th, alpha_t * bh, a2 * nh);
+        let v2 = x * x + y * y + z * z;
+        let w2 = a2 / v2;
+        RECIPROCAL_PI * (a2 * (w2 * w2))
+    }
+
+    #[allow(clippy::too_many_arguments)]
+    pub fn v(at: f32, ab: f32, tv: f32, bv: f32, tl: f32, bl: f32, nv: f32, nl: f32) -> f32 {
+        let len = |x: f32, y: f32, z: f32| (x * x + y * y + z * z).sqrt();
+        let gv = nl * len(at * tv, ab * bv, nv);
+        let gl = nv * len(at * tl, ab * bl, nl);
+        0.5 / (gv + gl).max(EPSILON)
+    }
+}
+
+/// The stretched lobe against three.js: alpha_t is the same mix, and D and V of the crate's
+/// anisotropic GGX agree with three.js's to its f32 rounding over random directions, roughness
+/// and strength (three.js's D forms |v|^2 from squares that do not cancel, so no n.h = 1 loss).
+#[test]
+fn threejs_anisotropic_lobe_agrees_to_f32_rounding() {
+    let mut rng = Rng(77);
+    let (mut wa, mut wd, mut wv, mut n) = (0.0f64, 0.0f64, 0.0f64, 0usize);
+    let rel = |a: f32, b: f32| (f64::from(a) - f64::from(b)).abs() / f64::from(b).abs();
+    let dir = |rng: &mut Rng| {
+        let z = 0.02 + 0.98 * rng.next_f64();
+        let phi = core::f64::consts::TAU * rng.next_f64();
+        let s = (1.0 - z * z).sqrt();
+        V3::new((s * phi.cos()) as f32, (s * phi.sin()) as f32, z as f32).normalize()
+    };
+    for _ in 0..20_000 {
+        let r = (0.05 + 0.95 * rng.next_f64()) as f32;
+        let s = rng.next_f64() as f32;
+        let ours_at = alpha_t(r * r, s);
+        let theirs_at = threejs::alpha_t(r, s);
+        wa = wa.max(rel(ours_at, theirs_at));
+        let (v, l) = (dir(&mut rng), dir(&mut rng));
+        let h = (v + l).normalize();
+        let lobe = Ggx::new(theirs_at, r * r).unwrap();
+        // The lobe's frame is (t, b, n) = (x, y, z): each dot product is a component.
+        let d_theirs = threejs::d(theirs_at, r * r, h.z, h.x, h.y);
+        let v_theirs = threejs::v(theirs_at, r * r, v.x, v.y, l.x, l.y, v.z, l.z);
+        if d_theirs > 1e-30 {
+            wd = wd.max(rel(lobe.d(h), d_theirs));
+        }
+        wv = wv.max(rel(lobe.v_correlated(v, l), v_theirs));
+        n += 1;
+    }
+    println!(
+        "three.js anisotropy over {n} pairs: alpha_t max rel {wa:.2e}, D max rel {wd:.2e}, \
+         V max rel {wv:.2e}"
+    );
+    // alpha_t: the same mix, summed in another order (a few f32 roundings).
+    assert!(wa < 1e-6, "{wa}");
+    // D: a handful of f32 roundings on three.js's side (a2 / v2 squared: about 10 ULP).
+    assert!(wd < 2e-6, "{wd}");
+    // V: two f32 square roots and sums on three.js's side.
+    assert!(wv < 2e-6, "{wv}");
+}

@@ -6,8 +6,11 @@
 //! - `sheen_albedo`: the built-in table and the published fits against the integrators
 //! - `sheen_engines`: against transcriptions of the Khronos sample viewer and three.js
 //! - `clearcoat`: clearcoat 0 is the base, reciprocity, energy, Kelemen's error, the viewer
-//! - `specular`: KHR_materials_ior / specular against the metallic-roughness material
-//! - `anisotropy`: strength 0 is isotropic, direction, bent reflection against the viewer
+//!   and three.js (lobe and layering)
+//! - `specular`: KHR_materials_ior / specular against the metallic-roughness material and
+//!   three.js
+//! - `anisotropy`: strength 0 is isotropic, direction, bent reflection against the viewer,
+//!   the stretched lobe against three.js
 //! - `layered`: the layered material: zero layers, furnace, energy, per-lobe compensation,
 //!   reciprocity, sampler chi-square, extremes and lanes
 //! - `transmission`: KHR_materials_transmission in the layered material: zero is the material

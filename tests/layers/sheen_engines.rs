@@ -3,9 +3,9 @@
 //! - the Khronos glTF Sample Viewer, `source/Renderer/shaders/brdf.glsl` at commit
 //!   d0b428c8946052cb640c4cf772686eb6c3abf3c2 (`D_Charlie`, `lambdaSheenNumericHelper`,
 //!   `lambdaSheen`, `V_Sheen`);
-//! - three.js, `src/renderers/shaders/ShaderChunk/lights_physical_pars_fragment.glsl.js`
-//!   (`D_Charlie`, `V_Neubelt`, as shipped in its r15x-r17x builds; the stored snapshot could
-//!   not be pinned to a commit).
+//! - three.js, `src/renderers/shaders/ShaderChunk/bsdfs.glsl.js` at commit
+//!   12f550e0f44f68e5b6c946dd242ee08e42d209e4 (`D_Charlie`, `V_Neubelt`; later releases
+//!   moved both, unchanged, into `lights_physical_pars_fragment.glsl.js`).
 //!
 //! Differences, each excluded from the comparison with its reason: the sample viewer clamps
 //! V to [0, 1] and three.js saturates V_neubelt (the crate does not: compared where the

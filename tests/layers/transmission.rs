@@ -14,7 +14,7 @@ use brdf::wide::{f32x8, f64x4};
 use brdf::{Real, V3};
 use core::f64::consts::TAU;
 
-use crate::common::{Rng, critical};
+use crate::common::{Rng, critical, sphere};
 
 fn sphere_dir(rng: &mut Rng) -> V3<f64> {
     let z = 2.0 * rng.next_f64() - 1.0;
@@ -117,71 +117,21 @@ fn white_furnace_over_the_sphere_is_at_most_one() {
     assert!(worst <= 1.0 + 2e-3, "{worst}");
 }
 
-const NZ: usize = 40;
-const NP: usize = 32;
-const SUB_T: usize = 48;
-const SUB_P: usize = 16;
-const SAMPLES: usize = 200_000;
-
 /// (statistic, degrees of freedom, stray samples) of the sampler's directions against the
-/// pdf over the whole sphere, samples of pdf 0 in a bin of their own; the stray samples are
-/// those in pooled bins where the pdf expects fewer than 5 in all.
+/// pdf over the whole sphere ([`sphere::chi_square`]); each live sample's returned pdf is the
+/// material's pdf function's (`pdf` may be another, to test the test).
 fn chi_square(m: &Layered<f64>, pdf: &dyn Fn(V3<f64>) -> f64, wo: V3<f64>) -> (f64, usize, f64) {
-    let mut observed = vec![0.0; NZ * NP + 1];
-    let mut rng = Rng(0xbeef);
-    for _ in 0..SAMPLES {
-        let (w, p) = m.sample(wo, rng.next_f64(), rng.next_f64());
-        assert!(w.x.is_finite() && w.y.is_finite() && w.z.is_finite() && p.is_finite() && p >= 0.0);
-        if p == 0.0 {
-            observed[NZ * NP] += 1.0;
-            continue;
-        }
-        assert_eq!(p, m.pdf(wo, w), "returned pdf vs pdf function at {w:?}");
-        let iz = (((w.z + 1.0) * 0.5 * NZ as f64) as usize).min(NZ - 1);
-        let ip = ((w.y.atan2(w.x).rem_euclid(TAU) / TAU * NP as f64) as usize) % NP;
-        observed[iz * NP + ip] += 1.0;
-    }
-    let mut expected = vec![0.0; NZ * NP + 1];
-    let mut mass = 0.0;
-    for iz in 0..NZ {
-        let z0 = -1.0 + 2.0 * iz as f64 / NZ as f64;
-        let z1 = -1.0 + 2.0 * (iz + 1) as f64 / NZ as f64;
-        let (t0, t1) = (z1.min(1.0).acos(), z0.max(-1.0).acos());
-        let dt = (t1 - t0) / SUB_T as f64;
-        let dp = TAU / NP as f64 / SUB_P as f64;
-        for ip in 0..NP {
-            let mut sum = 0.0;
-            for a in 0..SUB_T {
-                let t = t0 + (a as f64 + 0.5) * dt;
-                let (st, ct) = t.sin_cos();
-                for b in 0..SUB_P {
-                    let phi = (ip * SUB_P + b) as f64 * dp + 0.5 * dp;
-                    sum += pdf(V3::new(st * phi.cos(), st * phi.sin(), ct)) * st;
-                }
+    let fit = sphere::chi_square(
+        |rng| {
+            let (w, p) = m.sample(wo, rng.next_f64(), rng.next_f64());
+            if p > 0.0 {
+                assert_eq!(p, m.pdf(wo, w), "returned pdf vs pdf function at {w:?}");
             }
-            expected[iz * NP + ip] = sum * dt * dp * SAMPLES as f64;
-            mass += sum * dt * dp;
-        }
-    }
-    expected[NZ * NP] = (1.0 - mass).max(0.0) * SAMPLES as f64;
-    let (mut stat, mut dof, mut po, mut pe) = (0.0, 0usize, 0.0, 0.0);
-    for (o, e) in observed.iter().zip(&expected) {
-        if *e < 5.0 {
-            po += o;
-            pe += e;
-        } else {
-            stat += (o - e) * (o - e) / e;
-            dof += 1;
-        }
-    }
-    let mut stray = 0.0;
-    if pe >= 5.0 {
-        stat += (po - pe) * (po - pe) / pe;
-        dof += 1;
-    } else {
-        stray = po;
-    }
-    (stat, dof.saturating_sub(1), stray)
+            (w, p)
+        },
+        pdf,
+    );
+    (fit.stat, fit.dof, fit.stray)
 }
 
 fn transmissive() -> [(Layered<f64>, f64); 6] {

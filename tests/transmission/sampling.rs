@@ -4,7 +4,7 @@
 //! samples the sampler kills (pdf 0) counted in a bin of their own whose expected count is the
 //! mass the pdf misses. And the returned pdf is the pdf function's, the weight f |wi.z| / pdf.
 
-use crate::common::{Rng, critical};
+use crate::common::{Rng, critical, sphere};
 use crate::dir;
 use brdf::V3;
 use brdf::beckmann::Beckmann;
@@ -12,77 +12,32 @@ use brdf::ggx::Ggx;
 use brdf::rough_dielectric::{self as rd, Transport};
 use core::f64::consts::TAU;
 
-const NZ: usize = 40;
-const NP: usize = 32;
-const SUB_T: usize = 48;
-const SUB_P: usize = 16;
-const SAMPLES: usize = 200_000;
-
 type Sampler<'a> = &'a dyn Fn(V3<f64>, f64, f64, f64) -> (V3<f64>, f64, f64);
 type Pdf<'a> = &'a dyn Fn(V3<f64>, V3<f64>) -> f64;
 
-/// (statistic, degrees of freedom) of the sampler's directions against the pdf.
+/// (statistic, degrees of freedom) of the sampler's directions against the pdf
+/// ([`sphere::chi_square`]); each live sample is a unit vector whose returned pdf is the pdf
+/// function's.
 fn chi_square(wo: V3<f64>, sample: Sampler, pdf: Pdf) -> (f64, usize) {
-    let mut observed = vec![0.0; NZ * NP + 1];
-    let mut rng = Rng(0xbeef);
-    for _ in 0..SAMPLES {
-        let (w, p, _) = sample(wo, rng.next_f64(), rng.next_f64(), rng.next_f64());
-        assert!(w.x.is_finite() && w.y.is_finite() && w.z.is_finite() && p.is_finite() && p >= 0.0);
-        if p == 0.0 {
-            observed[NZ * NP] += 1.0;
-            continue;
-        }
-        assert!((w.length() - 1.0).abs() < 1e-9, "not unit: {w:?}");
-        let q = pdf(wo, w);
-        assert_eq!(p, q, "returned pdf vs pdf function at {w:?}");
-        let iz = (((w.z + 1.0) * 0.5 * NZ as f64) as usize).min(NZ - 1);
-        let ip = ((w.y.atan2(w.x).rem_euclid(TAU) / TAU * NP as f64) as usize) % NP;
-        observed[iz * NP + ip] += 1.0;
-    }
-    // Expected counts by a midpoint rule in (theta, phi) within each bin, weighted by
-    // sin(theta): a lobe at a pole (a normal view's transmission, 0.1 rad wide at alpha 0.3)
-    // fills one z bin, where a rule in z would sample it a dozen times only.
-    let mut expected = vec![0.0; NZ * NP + 1];
-    let mut mass = 0.0;
-    for iz in 0..NZ {
-        let z0 = -1.0 + 2.0 * iz as f64 / NZ as f64;
-        let z1 = -1.0 + 2.0 * (iz + 1) as f64 / NZ as f64;
-        let (t0, t1) = (z1.min(1.0).acos(), z0.max(-1.0).acos());
-        let dt = (t1 - t0) / SUB_T as f64;
-        let dp = TAU / NP as f64 / SUB_P as f64;
-        for ip in 0..NP {
-            let mut sum = 0.0;
-            for a in 0..SUB_T {
-                let t = t0 + (a as f64 + 0.5) * dt;
-                let (st, ct) = t.sin_cos();
-                for b in 0..SUB_P {
-                    let phi = (ip * SUB_P + b) as f64 * dp + 0.5 * dp;
-                    sum += pdf(wo, V3::new(st * phi.cos(), st * phi.sin(), ct)) * st;
-                }
+    let fit = sphere::chi_square(
+        |rng| {
+            let (w, p, _) = sample(wo, rng.next_f64(), rng.next_f64(), rng.next_f64());
+            if p > 0.0 {
+                assert!((w.length() - 1.0).abs() < 1e-9, "not unit: {w:?}");
+                assert_eq!(p, pdf(wo, w), "returned pdf vs pdf function at {w:?}");
             }
-            expected[iz * NP + ip] = sum * dt * dp * SAMPLES as f64;
-            mass += sum * dt * dp;
-        }
-    }
-    expected[NZ * NP] = (1.0 - mass).max(0.0) * SAMPLES as f64;
-    let (mut stat, mut dof, mut po, mut pe) = (0.0, 0usize, 0.0, 0.0);
-    for (o, e) in observed.iter().zip(&expected) {
-        if *e < 5.0 {
-            po += o;
-            pe += e;
-        } else {
-            stat += (o - e) * (o - e) / e;
-            dof += 1;
-        }
-    }
-    if pe >= 5.0 {
-        stat += (po - pe) * (po - pe) / pe;
-        dof += 1;
-    } else {
-        // Pooled bins that expect almost nothing must receive almost nothing.
-        assert!(po < 20.0, "{po} samples where the pdf expects {pe}");
-    }
-    (stat, dof.saturating_sub(1))
+            (w, p)
+        },
+        |w| pdf(wo, w),
+    );
+    // Pooled bins that expect almost nothing must receive almost nothing.
+    assert!(
+        fit.stray < 20.0,
+        "{} samples where the pdf expects {}",
+        fit.stray,
+        fit.stray_expected
+    );
+    (fit.stat, fit.dof)
 }
 
 fn check(name: &str, wo: V3<f64>, sample: Sampler, pdf: Pdf) {

@@ -78,9 +78,20 @@ fn cosines<T: Scalar>(a: &[T], i: usize) -> Cosines<T> {
     }
 }
 
-/// The layered material of the table's constructor arguments at `a[0..5]`.
+/// The layered material of the table's arguments at `a[0..22]`: the base (`a[0..5]`), then
+/// sheen, clearcoat, anisotropy, iridescence (factor, film thickness and index),
+/// transmission and volume (thickness, attenuation colour and distance).
 fn layered<T: Scalar>(a: &[T]) -> Layered<T> {
-    Layered::new(v(a, 0), a[3], a[4]).expect("in-domain material")
+    let film = ThinFilm::new(a[14], a[15]).expect("in-domain film");
+    let volume = Volume::new(a[17], v(a, 18), a[21]).expect("in-domain volume");
+    Layered::new(v(a, 0), a[3], a[4])
+        .and_then(|m| m.with_sheen(v(a, 5), a[8]))
+        .and_then(|m| m.with_clearcoat(a[9], a[10]))
+        .and_then(|m| m.with_anisotropy(a[11], a[12]))
+        .and_then(|m| m.with_iridescence(a[13], film))
+        .and_then(|m| m.with_transmission(a[16]))
+        .expect("in-domain material")
+        .with_volume(volume)
 }
 
 fn three<T: Scalar>(w: V3<T>) -> Vec<T> {
@@ -721,12 +732,12 @@ pub fn direct<T: Scalar>(path: &str, a: &[T]) -> Option<Vec<T>> {
             a[9],
             a[10],
         )),
-        "layers::layered::Layered::eval" => three(layered(a).eval(v(a, 5), v(a, 8))),
+        "layers::layered::Layered::eval" => three(layered(a).eval(v(a, 22), v(a, 25))),
         "layers::layered::Layered::lobe_probabilities" => {
-            three(layered(a).lobe_probabilities(v(a, 5)))
+            three(layered(a).lobe_probabilities(v(a, 22)))
         }
-        "layers::layered::Layered::pdf" => vec![layered(a).pdf(v(a, 5), v(a, 8))],
-        "layers::layered::Layered::sample" => sample(layered(a).sample(v(a, 5), a[8], a[9])),
+        "layers::layered::Layered::pdf" => vec![layered(a).pdf(v(a, 22), v(a, 25))],
+        "layers::layered::Layered::sample" => sample(layered(a).sample(v(a, 22), a[25], a[26])),
         "lights::radiance" => vec![lights::radiance(a[0], a[1], a[2])],
         "lights::radiance_pi" => vec![lights::radiance_pi(a[0], a[1], a[2])],
         "lights::radiance_pi_rgb" => three(lights::radiance_pi_rgb(v(a, 0), v(a, 3), a[6])),

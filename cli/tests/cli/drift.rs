@@ -5,7 +5,7 @@
 //! Renaming or reordering a parameter in the crate fails this test.
 
 use brdf_ref::KERNELS;
-use brdf_ref::table::CONSTRUCTORS;
+use brdf_ref::table::{BUILDERS, CONSTRUCTORS};
 use quote::ToTokens;
 use std::collections::HashMap;
 use std::path::{Path, PathBuf};
@@ -435,13 +435,64 @@ fn constructor(ix: &Index, ty_path: &str, param: &str) -> Result<Vec<Group>, Str
             .ok_or_else(|| format!("no constructor {ty_path}::{ctor}"))?;
         params(ix, sig, None)?
     };
-    Ok(groups
+    let mut out: Vec<Group> = groups
         .into_iter()
         .map(|g| Group {
             constructor_of: Some(param.to_string()),
             ..g
         })
-        .collect())
+        .collect();
+    out.extend(builders(ix, ty_path)?);
+    Ok(out)
+}
+
+/// The argument groups of a type's optional extensions (`table::BUILDERS`): each builder's
+/// parameters after its receiver, flattened, prefixed with the builder's name less `with_`
+/// unless already so named.
+fn builders(ix: &Index, ty_path: &str) -> Result<Vec<Group>, String> {
+    let Some((_, methods)) = BUILDERS.iter().find(|(t, _)| *t == ty_path) else {
+        return Ok(Vec::new());
+    };
+    let mut out = Vec::new();
+    for m in *methods {
+        let sig = ix
+            .fns
+            .get(&format!("{ty_path}::{m}"))
+            .ok_or_else(|| format!("no builder {ty_path}::{m}"))?;
+        let prefix = m
+            .strip_prefix("with_")
+            .ok_or_else(|| format!("builder {ty_path}::{m} is not named with_*"))?;
+        for input in &sig.inputs {
+            let FnArg::Typed(pt) = input else { continue };
+            let Pat::Ident(id) = &*pt.pat else {
+                return Err(format!(
+                    "{ty_path}::{m}: a parameter pattern that is not a name"
+                ));
+            };
+            for g in param(ix, sig, Some(ty_path), &id.ident.to_string(), &pt.ty)? {
+                let alternatives = g
+                    .alternatives
+                    .into_iter()
+                    .map(|alt| {
+                        alt.into_iter()
+                            .map(|n| {
+                                if n == prefix || n.starts_with(&format!("{prefix}_")) {
+                                    n
+                                } else {
+                                    format!("{prefix}_{n}")
+                                }
+                            })
+                            .collect()
+                    })
+                    .collect();
+                out.push(Group {
+                    alternatives,
+                    constructor_of: None,
+                });
+            }
+        }
+    }
+    Ok(out)
 }
 
 /// The argument groups of one parameter `name: ty` of `sig` (a method of `self_ty`).
@@ -696,6 +747,58 @@ fn drift_is_caught_when_a_parameter_is_renamed_or_reordered() {
             .any(|p| p.starts_with("phong::BlinnPhong::eval:")),
         "a macro-defined type's constructor: {macro_type:?}"
     );
+    let builder = drift(&edited(
+        "layers/layered.rs",
+        "pub fn with_transmission(self, transmission: T)",
+        "pub fn with_transmission(self, factor: T)",
+    ));
+    assert!(
+        builder
+            .iter()
+            .any(|p| p.starts_with("layers::layered::Layered::eval:")),
+        "a builder's parameters: {builder:?}"
+    );
+}
+
+/// Builders of the types in `table::BUILDERS` that are not extensions the rows take, with
+/// the reason.
+const BUILDERS_LEFT_OUT: &[(&str, &str)] = &[
+    (
+        "layers::layered::Layered::with_clearcoat_normal",
+        "the coat's normal is geometry (a normal map's texel), not a parameter of the extension's \
+         factors; the rows keep the shading normal",
+    ),
+    (
+        "layers::layered::Layered::with_clearcoat_normal_world",
+        "world-space form of with_clearcoat_normal",
+    ),
+    (
+        "layers::layered::Layered::with_compensation",
+        "a switch of the crate's energy compensation, not a glTF extension (off, as in the \
+         extensions)",
+    ),
+];
+
+#[test]
+fn every_builder_of_a_type_with_extensions_is_in_its_rows_or_left_out_with_a_reason() {
+    let ix = index(&parse(&crate_sources()));
+    for (ty, methods) in BUILDERS {
+        for p in ix
+            .public
+            .iter()
+            .filter(|p| p.starts_with(&format!("{ty}::with_")))
+        {
+            let listed = methods.iter().any(|m| *p == format!("{ty}::{m}"));
+            let left_out = BUILDERS_LEFT_OUT.iter().any(|(e, _)| e == p);
+            assert!(
+                listed != left_out,
+                "{p}: a builder is either in table::BUILDERS or in BUILDERS_LEFT_OUT, once"
+            );
+        }
+    }
+    for (e, _) in BUILDERS_LEFT_OUT {
+        assert!(ix.public.iter().any(|p| p == e), "{e} is no longer public");
+    }
 }
 
 /// Why a public method is not a kernel by its signature alone: a constructor (no receiver,

@@ -123,3 +123,73 @@ fn every_kernel_has_distinct_column_names_and_a_summary() {
         assert!(!k.outputs.is_empty(), "{}: at least one output", k.path);
     }
 }
+
+/// The layered rows' 22 material arguments: a dielectric base with every extension off at
+/// its glTF default but transmission `t` and volume thickness `thickness`.
+fn layered_args(t: f64, thickness: f64) -> Vec<f64> {
+    let mut a = vec![0.9, 0.6, 0.3, 0.0, 0.5]; // base colour, metallic, roughness
+    a.extend([0.0, 0.0, 0.0, 0.5]); // sheen colour (black: off), roughness
+    a.extend([0.0, 0.2, 0.0, 0.0]); // clearcoat (off), roughness, anisotropy strength, rotation
+    a.extend([0.0, 400.0, 1.3]); // iridescence factor (off), film thickness, index
+    a.push(t);
+    a.extend([thickness, 1.0, 1.0, 1.0, 1.0]); // volume thickness, attenuation colour, distance
+    a
+}
+
+#[test]
+fn layered_rows_with_transmission_are_the_crates_value_and_differ_from_opaque() {
+    use brdf::V3;
+    use brdf::layers::layered::Layered;
+    use brdf::transmission::Volume;
+    // wi below the surface: only the transmission lobe reaches it.
+    let (wo, wi) = (V3::new(0.0, 0.6, 0.8), V3::new(0.28, -0.48, -0.832));
+    let crate_eval = |t: f64, thickness: f64| {
+        let m = Layered::new(V3::new(0.9, 0.6, 0.3), 0.0, 0.5)
+            .and_then(|m| m.with_transmission(t))
+            .expect("in-domain material")
+            .with_volume(Volume::new(thickness, V3::splat(1.0), 1.0).expect("in-domain volume"));
+        let f = m.eval(wo, wi);
+        vec![f.x, f.y, f.z]
+    };
+    let cases = [(0.0, 0.0), (1.0, 0.0), (0.7, 0.0), (1.0, 2.0)];
+    let mut input = String::new();
+    for &(t, thickness) in &cases {
+        let mut row = layered_args(t, thickness);
+        row.extend([wo.x, wo.y, wo.z, wi.x, wi.y, wi.z]);
+        let fields: Vec<String> = row.iter().map(|&x| fmt(x, Float::F64)).collect();
+        input.push_str(&format!(
+            "layers::layered::Layered::eval,{}\n",
+            fields.join(",")
+        ));
+    }
+    let (code, out, err) = run(&["eval", "--f64"], &input);
+    assert_eq!(code, 0, "in-domain rows; stderr:\n{err}");
+    let rows: Vec<Vec<f64>> = out
+        .lines()
+        .filter(|l| !l.starts_with("kernel,"))
+        .map(|l| {
+            let fields: Vec<&str> = l.split(',').collect();
+            fields[fields.len() - 3..]
+                .iter()
+                .map(|f| parse(f, Float::F64).expect("a number"))
+                .collect()
+        })
+        .collect();
+    assert_eq!(rows.len(), cases.len(), "one output row per input row");
+    for (got, &(t, thickness)) in rows.iter().zip(&cases) {
+        let want = crate_eval(t, thickness);
+        assert!(
+            got.iter().zip(&want).all(|(g, w)| same(*g, *w)),
+            "transmission {t}, thickness {thickness}: the row gives {got:?}, the crate {want:?}"
+        );
+    }
+    let opaque = &rows[0];
+    assert!(opaque.iter().all(|&f| f == 0.0), "opaque: {opaque:?}");
+    for (got, &(t, thickness)) in rows.iter().zip(&cases).skip(1) {
+        assert!(
+            got.iter().all(|&f| f > 0.0),
+            "transmission {t}, thickness {thickness} transmits: {got:?}"
+        );
+    }
+    assert_ne!(rows[1], rows[3], "the volume's thickness changes the lobe");
+}

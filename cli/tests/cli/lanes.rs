@@ -98,6 +98,10 @@ const POLYNOMIAL: &[(&str, u128)] = &[
     ("layers::sheen::charlie", 2),
     ("layers::sheen::d_ashikhmin", 2),
     ("layers::sheen::albedo_fit_threejs", 2),
+    // The layered rows take every extension: sin and cos of the anisotropy rotation, the thin
+    // film's cos, exp and atan2 (as iridescence::dielectric), read through sharp lobes.
+    ("layers::layered::Layered::eval", 8),
+    ("layers::layered::Layered::pdf", 48),
     // sin and cos of the visible-normal and cosine samplers, as MetallicRoughness::sample.
     ("layers::layered::Layered::sample", 128),
     // sin and cos of the anisotropy rotation.
@@ -116,6 +120,50 @@ struct Known {
 }
 
 const KNOWN: &[Known] = &[
+    Known {
+        path: "layers::layered::Layered::sample",
+        why: "the pdf of a sampled direction is read back from the half vector recomputed from \
+              wi (the refraction half vector -(wo + eta wi) for a volume), whose rounding a sharp \
+              lobe amplifies by about 1 / alpha^2 and a grazing view by 1 / wo.z: at roughness \
+              below 0.1 or wo.z below 1e-5 the lane sin / cos move the pdf by up to 1e-12 \
+              relative in f64 (1423.9104643798364 against 1423.9104643786557 here) and 0.1% in \
+              f32, where the f32 scalar itself is 0.12% from f64; and a component of wi that \
+              cancels to 1e-7 carries their absolute error of 6e-8, millions of its own ULP",
+        example: (
+            Float::F64,
+            &[
+                0.3368213384833805,
+                0.6641644028299533,
+                0.16681931690688567,
+                0.5591404382906304,
+                0.0018523715769177551,
+                0.7857339144039932,
+                0.12726127121871333,
+                0.010479753140461234,
+                0.18794676565488866,
+                0.25204483885060824,
+                0.40762338616401605,
+                0.5260434281799553,
+                -115.07824949750432,
+                0.8239682235592756,
+                10000.0,
+                1.0,
+                0.41245583401934727,
+                31901.40488191506,
+                0.9852584231292708,
+                0.9556005640072942,
+                0.32791815087281884,
+                6.212981349564613e-5,
+                -0.9855283866647054,
+                -0.060669362008223385,
+                0.15828148214992788,
+                0.19437175184471223,
+                0.8439660635167973,
+            ],
+        ),
+        // roughness, wo.z
+        covers: |r| r[4] < 0.1 || r[24] < 1e-5,
+    },
     Known {
         path: "sampling::beckmann_vndf",
         why: "its 8 fixed Newton-bisection steps have not converged in the tail (u1 near 1) \
