@@ -168,8 +168,13 @@ type Task<'a, S, const I: usize, const O: usize> = ([&'a [S]; I], [&'a mut [S]; 
 
 /// [`run`] over all cores with `rayon`: the slices are cut into chunks of [`PAR_CHUNK`]
 /// elements (the last one shorter), and each chunk is one [`run`] on rayon's global thread
-/// pool (or the pool of an enclosing `ThreadPool::install`). The kernel is shared by every
-/// thread, so it is `Fn + Sync` (a `move` closure over `Copy` parameters is). Every element's
+/// pool (or the pool of an enclosing `ThreadPool::install`). The kernel is `Fn + Sync + Clone`
+/// (a `move` closure over `Copy` parameters is all three), and each chunk runs its own clone:
+/// a kernel [`run`] only reaches through a reference keeps its captured parameters in memory
+/// the output writes might alias, so the work that depends on them alone (the alpha, eta and
+/// k factors of a fixed-parameter loop) is redone for every group of lanes instead of once
+/// (the `batch` module docs; in `bench/mitsuba/compare.py --parallel` the fast rough
+/// conductor did not scale at all on 2 cores before each chunk had its own copy). Every element's
 /// result is bit for bit what [`run`] gives: chunks are whole groups of lanes, so the
 /// grouping, and with it each element's evaluation, is [`run`]'s (lanes do not interact;
 /// `tests/lanes/batch_par.rs`). Batches of at most one chunk run on the calling thread.
@@ -182,7 +187,7 @@ type Task<'a, S, const I: usize, const O: usize> = ([&'a [S]; I], [&'a mut [S]; 
 pub fn par_run<T: Real, const I: usize, const O: usize>(
     inputs: [&[T::Scalar]; I],
     outputs: [&mut [T::Scalar]; O],
-    kernel: impl Fn([T; I]) -> [T; O] + Sync,
+    kernel: impl Fn([T; I]) -> [T; O] + Sync + Clone,
 ) -> Result<usize, ParamError>
 where
     T::Scalar: Send + Sync,
@@ -215,8 +220,9 @@ where
         })
         .collect();
     tasks.into_par_iter().for_each(|(ins, os)| {
-        // Each chunk's slices have one length: `run` cannot fail here.
-        let _ = run::<T, I, O>(ins, os, &kernel);
+        // Each chunk's slices have one length: `run` cannot fail here. The clone is the
+        // chunk's own (see above): its captures are locals the compiler can hoist.
+        let _ = run::<T, I, O>(ins, os, kernel.clone());
     });
     Ok(n)
 }
@@ -229,7 +235,7 @@ where
 pub fn par_run_f32<const I: usize, const O: usize>(
     inputs: [&[f32]; I],
     outputs: [&mut [f32]; O],
-    kernel: impl Fn([f32x8; I]) -> [f32x8; O] + Sync,
+    kernel: impl Fn([f32x8; I]) -> [f32x8; O] + Sync + Clone,
 ) -> Result<usize, ParamError> {
     par_run::<f32x8, I, O>(inputs, outputs, kernel)
 }
@@ -242,7 +248,7 @@ pub fn par_run_f32<const I: usize, const O: usize>(
 pub fn par_run_f64<const I: usize, const O: usize>(
     inputs: [&[f64]; I],
     outputs: [&mut [f64]; O],
-    kernel: impl Fn([f64x4; I]) -> [f64x4; O] + Sync,
+    kernel: impl Fn([f64x4; I]) -> [f64x4; O] + Sync + Clone,
 ) -> Result<usize, ParamError> {
     par_run::<f64x4, I, O>(inputs, outputs, kernel)
 }

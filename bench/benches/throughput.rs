@@ -467,7 +467,7 @@ fn run8<const I: usize, const O: usize>(
     par: bool,
     inputs: [&[f32]; I],
     outputs: [&mut [f32]; O],
-    kernel: impl Fn([f32x8; I]) -> [f32x8; O] + Sync,
+    kernel: impl Fn([f32x8; I]) -> [f32x8; O] + Sync + Clone,
 ) -> Result<usize, brdf::ParamError> {
     if par {
         batch::par_run_f32(inputs, outputs, kernel)
