@@ -338,9 +338,10 @@ pub fn ggx_conductor_rgb_fast<T: Real>(
 /// --all-features --test cook_torrance local:: -- --nocapture`).
 ///
 /// Run time on `f32x8` (a Zen 4 core, `-C target-cpu=native`, `bench/mitsuba/compare.py
-/// --n 1000000`): 6.35 ms per 10^6 hemisphere direction pairs times n.l, 3.1 times Mitsuba
-/// 3's LLVM back end on the same pairs in the same run (2.06 ms, whose f32 arithmetic is 21
-/// ULP off where this is 1.5); 7.58 ms (3.7 times) with V's roots on `vsqrtpd`. More in
+/// --n 1000000`, idle): 6.44 ms per 10^6 hemisphere direction pairs times n.l, 3.15 times
+/// Mitsuba 3's LLVM back end on the same pairs in the same run (2.04 ms, whose f32 arithmetic
+/// is 21 ULP off where this is 1.5); with V's roots on `vsqrtpd` it took 3.7 times in an
+/// earlier run. More in
 /// `bench/mitsuba/README.md`.
 ///
 /// Sources: as [`ggx_conductor_rgb`]; the half-vector form of D as Mitsuba 3's
@@ -444,7 +445,8 @@ fn local_sums<T: Real>(s: V3<T>) -> (T, T) {
 /// D V = alpha^2 |s|^4 / (2 pi t^2 den) with t = s_x^2 + s_y^2 + alpha^2 s_z^2 (|s|^2 times
 /// sin^2 + alpha^2 cos^2 of h) and den = n.l sqrt(alpha^2 + n.v^2 (1 - alpha^2)) + n.v
 /// sqrt(alpha^2 + n.l^2 (1 - alpha^2)), one division, capped at `cap`, for the clamped alpha;
-/// the cosines are saturated here. The floor on the denominator keeps 0 / 0 out where |s|^4
+/// the cosines are taken as given (the exact tier's callers saturate them; the fast tier's
+/// horizon select discards a value at a cosine <= 0). The floor on the denominator keeps 0 / 0 out where |s|^4
 /// and t^2 underflow (|s|^2 < 2^-60 in f32, 2^-500 in f64: nearly opposite directions, both
 /// that close to the horizon, where the result is finite but not accurate).
 #[cfg(feature = "ggx")]

@@ -939,7 +939,9 @@ impl<T: Real> ConductorFast<T> {
         }
     }
 
-    /// F at the cosine c (in [0, 1], or NaN), given s2 = 1 - c^2 and zu = Re(z) 2^(2j - 1),
+    /// F at the cosine c (in [0, 1], or a few roundings above 1 with s2 as many below 0, as a
+    /// caller's unsaturated c^2 = (wo.s)^2 / |s|^2 gives; or NaN), given s2 = 1 - c^2 and
+    /// zu = Re(z) 2^(2j - 1),
     /// z = s^2 = N^2 - s2 m^2 (in units of m^2; `z_up` the power of two), each rounded as the
     /// caller chooses: only c m and c sigma read c itself, after the two roots, so that a
     /// caller with c^2 at hand starts the roots before c.

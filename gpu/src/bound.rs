@@ -181,8 +181,8 @@ pub struct Interp<'m> {
     excluded: Option<Excluded>,
     /// The source number of the next alternatives (`round`, `floor`).
     next_src: u32,
-    /// Per function, per expression: whether it is an operand of a `+` or `-` (part of a
-    /// longer chain of sums).
+    /// Per function, per expression: whether its value may become part of a longer chain of
+    /// sums ([`may_join_a_sum`]), so that a reordering could split it.
     in_sum: Vec<Vec<bool>>,
 }
 
@@ -193,21 +193,7 @@ impl<'m> Interp<'m> {
         let in_sum = module
             .functions
             .iter()
-            .map(|(_, f)| {
-                let mut in_sum = vec![false; f.expressions.len()];
-                for (_, e) in f.expressions.iter() {
-                    if let Expression::Binary {
-                        op: BinaryOperator::Add | BinaryOperator::Subtract,
-                        left,
-                        right,
-                    } = e
-                    {
-                        in_sum[left.index()] = true;
-                        in_sum[right.index()] = true;
-                    }
-                }
-                in_sum
-            })
+            .map(|(_, f)| may_join_a_sum(f))
             .collect();
         Self {
             module,
@@ -468,6 +454,33 @@ impl<'m> Interp<'m> {
                     B::Divide if (alt(&a) || alt(&b)) && scalar(&a) && scalar(&b) => {
                         self.lift(&[a, b], |s, xy| s.div(xy[0], xy[1]))
                     }
+                    B::Add | B::Subtract
+                        if matches!(a, Val::Vec(_)) || matches!(b, Val::Vec(_)) =>
+                    {
+                        // Per component, each addition charged in ULP of its component's
+                        // chain (a reordering of a vector sum reorders every component).
+                        let n = match (&a, &b) {
+                            (Val::Vec(x), _) | (_, Val::Vec(x)) => x.len(),
+                            _ => unreachable!("one operand is a vector"),
+                        };
+                        let spans = self.sum_spans(fr, h, n);
+                        let comp = |v: &Val, i: usize| match v {
+                            Val::Vec(x) => x[i],
+                            other => other
+                                .scalar()
+                                .unwrap_or_else(|| panic!("{other:?} in a vector sum")),
+                        };
+                        let sub = *op == B::Subtract;
+                        Val::Vec(
+                            (0..n)
+                                .map(|i| {
+                                    let y = comp(&b, i);
+                                    let y = if sub { neg(y) } else { y };
+                                    add_in(comp(&a, i), y, spans[i])
+                                })
+                                .collect(),
+                        )
+                    }
                     _ => self.binary(*op, a.collapsed(), b.collapsed()),
                 }
             }
@@ -657,6 +670,29 @@ impl<'m> Interp<'m> {
             .map(|l| self.expr(fr, l).scalar().map_or(0.0, |n| n.v.abs() + n.e))
             .sum();
         (span, n)
+    }
+
+    /// [`Self::sum_span`] per component of a vector sum of `n` components (a scalar leaf, a
+    /// splatted operand, counts in every component).
+    fn sum_spans(&mut self, fr: &mut Frame<'m>, h: Handle<Expression>, n: usize) -> Vec<f64> {
+        let mut leaves = Vec::new();
+        Self::chain_leaves(fr, h, false, &mut leaves);
+        let mut span = vec![0.0; n];
+        for l in leaves {
+            match self.expr(fr, l) {
+                Val::Vec(v) => {
+                    for (s, x) in span.iter_mut().zip(&v) {
+                        *s += x.v.abs() + x.e;
+                    }
+                }
+                other => {
+                    if let Some(x) = other.scalar() {
+                        span.iter_mut().for_each(|s| *s += x.v.abs() + x.e);
+                    }
+                }
+            }
+        }
+        span
     }
 
     /// Excludes the row where some reordering of the chain of products `h` heads (whose
@@ -858,6 +894,88 @@ struct Frame<'m> {
     fidx: usize,
 }
 
+/// Per expression of `f`: whether its value may become part of a longer sum an implementation
+/// could reorder. Only a value whose every use is an operand of `*` or `/`, a comparison, a
+/// condition or a builtin's argument (but `fma`'s addend) is kept out of every sum; any other
+/// use (an operand of `+` or `-`, `fma`'s addend, a negation, a vector's component, a select's
+/// value, a stored, passed or returned value, a conversion) may carry it into one, across
+/// an inlined call too, and so does not let a difference count as exact.
+fn may_join_a_sum(f: &Function) -> Vec<bool> {
+    use BinaryOperator as B;
+    let mut flag = vec![false; f.expressions.len()];
+    for (_, e) in f.expressions.iter() {
+        let mut mark = |h: &Handle<Expression>| flag[h.index()] = true;
+        match e {
+            Expression::Binary {
+                op:
+                    B::Multiply
+                    | B::Divide
+                    | B::Less
+                    | B::LessEqual
+                    | B::Greater
+                    | B::GreaterEqual
+                    | B::Equal
+                    | B::NotEqual,
+                ..
+            } => {}
+            Expression::Binary { left, right, .. } => {
+                mark(left);
+                mark(right);
+            }
+            Expression::Math {
+                fun: MathFunction::Fma,
+                arg2: Some(c),
+                ..
+            } => mark(c),
+            Expression::Math { .. } => {}
+            Expression::Select { accept, reject, .. } => {
+                mark(accept);
+                mark(reject);
+            }
+            Expression::Compose { components, .. } => components.iter().for_each(&mut mark),
+            Expression::Unary { expr, .. } | Expression::As { expr, .. } => mark(expr),
+            Expression::AccessIndex { base, .. } | Expression::Access { base, .. } => mark(base),
+            Expression::Splat { value, .. } => mark(value),
+            Expression::Swizzle { vector, .. } => mark(vector),
+            _ => {}
+        }
+    }
+    mark_statement_uses(&f.body, &mut flag);
+    flag
+}
+
+/// [`may_join_a_sum`]'s walk of the statements: stored, returned and passed values.
+fn mark_statement_uses(block: &Block, flag: &mut [bool]) {
+    for st in block.iter() {
+        match st {
+            Statement::Store { value, .. } => flag[value.index()] = true,
+            Statement::Return { value: Some(v) } => flag[v.index()] = true,
+            Statement::Call { arguments, .. } => {
+                for a in arguments {
+                    flag[a.index()] = true;
+                }
+            }
+            Statement::Block(b) => mark_statement_uses(b, flag),
+            Statement::If { accept, reject, .. } => {
+                mark_statement_uses(accept, flag);
+                mark_statement_uses(reject, flag);
+            }
+            Statement::Loop {
+                body, continuing, ..
+            } => {
+                mark_statement_uses(body, flag);
+                mark_statement_uses(continuing, flag);
+            }
+            Statement::Switch { cases, .. } => {
+                for c in cases {
+                    mark_statement_uses(&c.body, flag);
+                }
+            }
+            _ => {}
+        }
+    }
+}
+
 fn add(a: Num, b: Num) -> Num {
     add_in(a, b, 0.0)
 }
@@ -919,7 +1037,8 @@ fn neg(a: Num) -> Num {
 /// Whether `n` is exactly a power of two (an exact operand whose product is exact).
 fn power_of_two(n: Num) -> bool {
     let m = n.v.abs();
-    n.e == 0.0 && m.is_normal() && m.to_bits() & ((1u64 << 52) - 1) == 0
+    // Normal as an f32 (a subnormal literal may be flushed to 0).
+    n.e == 0.0 && m >= TINY && m.is_normal() && m.to_bits() & ((1u64 << 52) - 1) == 0
 }
 
 fn mul(a: Num, b: Num) -> Num {
@@ -1033,12 +1152,59 @@ mod tests {
     }
 
     #[test]
+    fn a_difference_that_may_join_a_longer_sum_is_not_exact() {
+        // 1.5 - 1 alone is exact; inside a sum, through a vector's component or a return
+        // (an inlined call's caller may add to it) a reordering may round it.
+        for src in [
+            "fn f(x: f32, y: f32, z: f32) -> f32 { return x - y + z; }",
+            "fn f(x: f32, y: f32, z: f32) -> f32 { let v = vec2<f32>(x - y, z); return v.x * z; }",
+            "fn f(x: f32, y: f32, z: f32) -> f32 { return (x - y); }",
+            "fn f(x: f32, y: f32, z: f32) -> f32 { return fma(z, z, x - y) * z; }",
+        ] {
+            let m = module(src);
+            let mut i = Interp::new(&m);
+            let r = i.run("f", &[1.5, 1.0, 0.3]).unwrap();
+            assert!(r[0].e > 0.0, "{src}: {r:?}");
+        }
+        // Kept out of every sum (a product's operand): exact.
+        let m = module("fn f(x: f32, y: f32, z: f32) -> f32 { return (x - y) * 2.0; }");
+        let r = Interp::new(&m).run("f", &[1.5, 1.0, 0.3]).unwrap();
+        assert_eq!((r[0].v, r[0].e), (1.0, 0.0));
+    }
+
+    #[test]
+    fn a_vector_sum_is_charged_for_its_reordering() {
+        // (1000 + 1) - 1000 per component: a reordering may form 1 - 1000 or 1000 + 1 first,
+        // rounded in ULP of about 2000, where the form's own partial sums are exact.
+        let m = module(
+            "fn f(a: f32, b: f32, c: f32) -> vec2<f32> {
+                return vec2<f32>(a, a) + vec2<f32>(b, b) - vec2<f32>(c, c);
+            }",
+        );
+        let r = Interp::new(&m).run("f", &[1000.0, 1.0, 1000.0]).unwrap();
+        let scalar = module("fn f(a: f32, b: f32, c: f32) -> f32 { return a + b - c; }");
+        let s = Interp::new(&scalar)
+            .run("f", &[1000.0, 1.0, 1000.0])
+            .unwrap();
+        assert!(r[0].e >= 0.5 * ulp32(2000.0), "{r:?}");
+        assert_eq!((r[0].v, r[0].e), (s[0].v, s[0].e), "as the scalar chain");
+    }
+
+    #[test]
+    fn a_subnormal_power_of_two_is_not_an_exact_factor() {
+        let tiny = f64::powi(2.0, -140);
+        assert!(!power_of_two(Num { v: tiny, e: 0.0 }));
+        assert!(power_of_two(Num { v: 0.5, e: 0.0 }));
+    }
+
+    #[test]
     fn products_by_powers_of_two_and_sterbenz_differences_are_exact() {
-        let m = module("fn f(x: f32, y: f32) -> f32 { return 0.5 * x - y; }");
+        // The difference is a product's operand, kept out of every sum.
+        let m = module("fn f(x: f32, y: f32) -> f32 { return (0.5 * x - y) * 2.0; }");
         let mut i = Interp::new(&m);
-        // 0.5 * 3 = 1.5 exactly, 1.5 - 1 exactly (Sterbenz).
+        // 0.5 * 3 = 1.5 exactly, 1.5 - 1 exactly (Sterbenz), times 2 exactly.
         let r = i.run("f", &[3.0, 1.0]).unwrap();
-        assert_eq!((r[0].v, r[0].e), (0.5, 0.0));
+        assert_eq!((r[0].v, r[0].e), (1.0, 0.0));
         // 1.5 - 0.1: not within a factor of 2, rounded.
         assert!(i.run("f", &[3.0, 0.1]).unwrap()[0].e > 0.0);
     }

@@ -3,9 +3,9 @@
 //! 14c393ecf0292030945fcebdf658b143329b8897), transcribed in f32.
 //!
 //! The viewer follows Belcour and Barla's supplemental code, as the crate does, and differs in
-//! four ways. The transcription takes each as a switch, so that the test shows every
-//! difference by itself and that, with all four set to the crate's reading, the two agree to
-//! f32 rounding:
+//! four ways. The transcription takes the first three as switches, so that the test shows each
+//! by itself and that, with all three set to the crate's reading, the two agree to f32
+//! rounding; the fourth is left out of the comparison by its rows:
 //!
 //! 1. it sums the Airy series to m = 2 (the crate to m = 3);
 //! 2. it adds the incoherent term C0 as white in linear Rec.709, (C0, C0, C0), where the crate
@@ -208,7 +208,7 @@ fn max_abs(reading: Reading, metals: bool) -> (f64, usize) {
 }
 
 #[test]
-fn sample_viewer_agrees_once_its_four_differences_are_read_the_crates_way() {
+fn sample_viewer_agrees_once_its_differences_are_read_the_crates_way() {
     let (all, n) = max_abs(CRATE, false);
     let (all_metal, n_metal) = max_abs(CRATE, true);
     let diffs = [
@@ -244,7 +244,8 @@ fn sample_viewer_agrees_once_its_four_differences_are_read_the_crates_way() {
     // With the four differences read the crate's way: f32 rounding of the viewer's sums and of
     // cosines of phases up to about 80 radians.
     assert!(n > 1000 && n_metal > 400, "{n} {n_metal}");
-    assert!(all < 2e-4 && all_metal < 2e-4, "{all} {all_metal}");
+    // Measured 2.58e-5 (dielectric) and 1.31e-6 (metals).
+    assert!(all < 4e-5 && all_metal < 4e-5, "{all} {all_metal}");
     // Each difference alone shows (so the switches are live and the agreement above is not
     // an accident of the grid): the m = 3 term and the white of C0 on every base, the phase's
     // kappa on metals only.

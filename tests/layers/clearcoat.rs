@@ -205,7 +205,8 @@ fn threejs_layer(outgoing: f32, coat: f32, clearcoat: f32, n_dot_v: f32) -> f32 
 /// spherical-Gaussian fit of (1 - c)^5, whose departure from Schlick's is measured here.
 #[test]
 fn threejs_coat_agrees_except_for_its_fresnel_fit() {
-    let (mut dv_worst, mut f_worst, mut layer_worst) = (0.0f64, 0.0f64, 0.0f64);
+    let (mut dv_worst, mut dv_far) = (0.0f64, 0.0f64);
+    let (mut f_worst, mut layer_worst) = (0.0f64, 0.0f64);
     for r in [0.1f32, 0.3, 0.5, 0.8, 1.0] {
         let a = r * r;
         for i in 1..=16 {
@@ -228,7 +229,12 @@ fn threejs_coat_agrees_except_for_its_fresnel_fit() {
                     // D V alone: each side's value divided by its own Fresnel.
                     let ours_dv = f64::from(ours) / f64::from(brdf::layers::clearcoat::fresnel(vh));
                     let theirs_dv = f64::from(theirs) / f64::from(threejs_f_schlick(0.04, 1.0, vh));
-                    dv_worst = dv_worst.max((ours_dv - theirs_dv).abs() / theirs_dv);
+                    let r = (ours_dv - theirs_dv).abs() / theirs_dv;
+                    if nh > 0.99 {
+                        dv_worst = dv_worst.max(r);
+                    } else {
+                        dv_far = dv_far.max(r);
+                    }
                 }
                 // The layering: the crate's `layer` given three.js's own coat and Fcc.
                 for (base, cc) in [(0.3f32, 1.0f32), (0.8, 0.5), (0.05, 0.25)] {
@@ -248,11 +254,13 @@ fn threejs_coat_agrees_except_for_its_fresnel_fit() {
         f_worst = f_worst.max((sg - schlick).abs() / schlick);
     }
     println!(
-        "three.js clearcoat: D V max rel {dv_worst:.2e}, layering max rel {layer_worst:.2e}, \
-         its Fresnel fit against Schlick's max rel {f_worst:.3e}"
+        "three.js clearcoat: D V max rel {dv_worst:.2e} for n.h > 0.99, {dv_far:.2e} elsewhere, \
+         layering max rel {layer_worst:.2e}, its Fresnel fit against Schlick's max rel {f_worst:.3e}"
     );
-    // D V: the viewer's bound (three.js forms D the same cancelling way).
+    // D V near n.h = 1: the viewer's bound (three.js forms D the same cancelling way).
     assert!(dv_worst < 5e-4, "{dv_worst}");
+    // Away from it the cancellation is milder (measured 5.2e-6, at roughness 0.1).
+    assert!(dv_far < 1e-5, "{dv_far}");
     // The layering is the same formula: a few f32 roundings (fused or not).
     assert!(layer_worst < 1e-6, "{layer_worst}");
     // Karis's fit departs from Schlick's by up to 6.9% (measured 6.885e-2 on this grid).
