@@ -979,7 +979,11 @@ impl<T: Real> ConductorFast<T> {
         // A = rho^2 |s|^2 + s2^2, B = rho s2 2 Re(s) with s in units of m (rho = c / m = c sigma;
         // where rho is capped, A / (A + B) rounds to 1 regardless).
         let rho = (c * sigma).min(tiny_bound.recip());
-        let a_par = (rho * rho).mul_add(s_abs2, s2 * s2);
+        // A = 0 only where s2 = 0 and s = 0 together (normal incidence on an index whose
+        // N^2 - 1 rounds to -1, or wo = wi on the horizon): the floor turns the 0 / 0 below
+        // into its limit A / (A + B) = 1 (B = 0 there too) and keeps A out of the subnormal
+        // range; a normal A is unchanged.
+        let a_par = (rho * rho).mul_add(s_abs2, s2 * s2).max(T::MIN_POSITIVE);
         let ab = (rho * s2 * g).mul_add(t, a_par);
         let ratio = (ul_abs2 * a_par) / (pl_abs2 * pl_abs2 * ab);
         // A NaN cosine fails `c <= 0` and reaches F through the ratio.
