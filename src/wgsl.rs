@@ -115,7 +115,10 @@ pub const MATERIAL: &str = include_str!("../wgsl/material.wgsl");
 /// The twins of `brdf::ibl::dfg`'s per-pixel terms: the analytic split-sum fits (Karis mobile,
 /// Lazarov, Narkowicz's two), the split-sum specular, the roughness-mip mappings; and of
 /// `brdf::ibl::irradiance::Sh9`'s radiance and irradiance from nine RGB spherical-harmonic
-/// coefficients (`ibl_irradiance_Sh9_eval`, taking the 27 coefficients first).
+/// coefficients (`ibl_irradiance_Sh9_eval`, taking the 27 coefficients first); and of
+/// `brdf::ibl::energy`'s per-pixel multiple-scattering terms (Kulla and Conty's lobe and
+/// Fresnel, the average Schlick Fresnel, Turquin's scale, Fdez-Aguera's split-sum terms;
+/// the E and E_avg tables they read are textures in a shader).
 pub const IBL: &str = include_str!("../wgsl/ibl.wgsl");
 
 /// The twins of `brdf::sampling`'s cosine-hemisphere sampler and pdf, reflection Jacobian,

@@ -1,8 +1,9 @@
 // brdf: image-based lighting terms a shader evaluates per pixel, the twins of the Rust module
 // `ibl::dfg` (the analytic split-sum fits [A, B], the split-sum specular and the roughness-mip
 // mappings), and of `ibl::irradiance`'s evaluation of nine spherical-harmonic coefficients
-// (radiance and irradiance). Needs common.wgsl. The DFG table, prefilter samples, the SH
-// projection and the multiple-scattering compensation have no twin.
+// (radiance and irradiance), and of `ibl::energy`'s per-pixel multiple-scattering terms (the
+// tables they read are textures in a shader). Needs common.wgsl. The DFG table, prefilter
+// samples, the SH projection and the table lookups have no twin.
 
 // 0 at and below the horizon (n.v <= 0), the fit's value above (ibl::dfg::fit_guard).
 fn brdf_ibl_fit_guard(n_dot_v: f32, v: f32) -> f32 {
@@ -261,4 +262,52 @@ fn ibl_irradiance_Sh9_irradiance(
         brdf_ibl_sh9_irradiance(coeffs_0_b, coeffs_1_b, coeffs_2_b, coeffs_3_b, coeffs_4_b,
             coeffs_5_b, coeffs_6_b, coeffs_7_b, coeffs_8_b, n_x, n_y, n_z),
     );
+}
+
+// Kulla and Conty's multiple-scattering lobe (1 - E_o)(1 - E_i) / (pi (1 - E_avg)) (Kulla and
+// Conty 2017, "Revisiting Physically Based Shading at Imageworks"; Kelemen and Szirmay-Kalos
+// 2001): 0 where a factor is 0, capped at the largest f32 (ibl::energy::kulla_conty_lobe).
+fn ibl_energy_kulla_conty_lobe(e_o: f32, e_i: f32, e_avg: f32) -> f32 {
+    let num = (1.0 - e_o) * (1.0 - e_i);
+    let den = BRDF_PI * (1.0 - e_avg);
+    let ok = (den > 0.0) & (num > 0.0);
+    return select(0.0, min(num / select(1.0, den, ok), BRDF_F32_MAX), ok);
+}
+
+// Kulla and Conty's multiple-scattering Fresnel F_avg^2 E_avg / (1 - F_avg (1 - E_avg)), 1
+// where the denominator is 0, capped at 1 (ibl::energy::kulla_conty_fresnel).
+fn ibl_energy_kulla_conty_fresnel(f_avg: f32, e_avg: f32) -> f32 {
+    let den = 1.0 - f_avg * (1.0 - e_avg);
+    let ok = den > 0.0;
+    return min(select(1.0, f_avg * f_avg * e_avg / select(1.0, den, ok), ok), 1.0);
+}
+
+// The hemispherical average of Schlick's Fresnel, F0 + (F90 - F0) / 21 (Fdez-Aguera 2019,
+// ibl::energy::fresnel_avg_schlick).
+fn ibl_energy_fresnel_avg_schlick(f0: f32, f90: f32) -> f32 {
+    return fma(f90 - f0, 0.047619047619047616, f0);
+}
+
+// Turquin's energy-compensation factor 1 + F (1 - E) / E (Turquin 2019, eqs. 14 and 16), the
+// quotient capped before the product so that F = 0 gives 1 (ibl::energy::turquin_scale).
+fn ibl_energy_turquin_scale(e: f32, f: f32) -> f32 {
+    return min(fma(f, min((1.0 - e) / e, BRDF_F32_MAX), 1.0), BRDF_F32_MAX);
+}
+
+// Fdez-Aguera's multiple-scattering term Fms Ems = FssEss F_avg Ems / (1 - Ems F_avg), Ems =
+// 1 - Ess, 0 where the denominator is 0 (Fdez-Aguera 2019, JCGT 8(1), Listing 1;
+// ibl::energy::fdez_aguera_ms).
+fn ibl_energy_fdez_aguera_ms(fss_ess: f32, e_ss: f32, f_avg: f32) -> f32 {
+    let e_ms = 1.0 - e_ss;
+    let den = 1.0 - e_ms * f_avg;
+    let ok = den > 0.0;
+    return select(0.0, fss_ess * f_avg * e_ms / select(1.0, den, ok), ok);
+}
+
+// Fdez-Aguera's split-sum specular (FssEss, Fms Ems) from a DFG pair (A, B) and F0: FssEss =
+// F0 A + B, Ess = A + B, F_avg = F0 + (1 - F0) / 21 (Listing 1; ibl::energy::fdez_aguera).
+fn ibl_energy_fdez_aguera(a: f32, b: f32, f0: f32) -> vec2<f32> {
+    let fss_ess = fma(f0, a, b);
+    let ms = ibl_energy_fdez_aguera_ms(fss_ess, a + b, ibl_energy_fresnel_avg_schlick(f0, 1.0));
+    return vec2<f32>(fss_ess, ms);
 }

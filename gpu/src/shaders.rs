@@ -383,9 +383,22 @@ pub const NO_TWIN: &[(&str, &str)] = &[
         "precomputation of prefiltered environment maps, run once per map, not per pixel",
     ),
     (
-        "ibl::energy::",
-        "energy-compensation tables and their fits: not written yet (a shader reads them from \
-         a texture)",
+        "ibl::energy::e_ggx",
+        "a bilinear lookup of the built-in E table: a shader samples E_GGX_TABLE as a texture",
+    ),
+    (
+        "ibl::energy::e_avg_ggx",
+        "a linear lookup of the built-in E_avg table: a shader samples E_AVG_GGX_TABLE as a \
+         texture",
+    ),
+    (
+        "ibl::energy::kulla_conty_ggx",
+        "reads the built-in E and E_avg tables (a shader samples them as textures and calls \
+         ibl_energy_kulla_conty_lobe and ibl_energy_kulla_conty_fresnel)",
+    ),
+    (
+        "ibl::energy::fresnel_avg_conductor",
+        "a 32-point quadrature in f64, computed once per material on the CPU, not per pixel",
     ),
     (
         "layers::sheen::albedo",
