@@ -9,6 +9,20 @@ use glam::DVec3;
 
 pub mod sphere;
 
+/// A random unit direction of the upper hemisphere: n.v from 1e-6 to 1, log-uniform half the
+/// time (grazing angles, where working-precision forms lose most), uniform in z otherwise.
+/// The working-precision tiers' tests draw their directions from it.
+pub fn random_dir(rng: &mut Rng) -> V3<f64> {
+    let z = if rng.next_f64() < 0.5 {
+        libm::pow(10.0, -6.0 * rng.next_f64())
+    } else {
+        rng.next_f64()
+    };
+    let phi = core::f64::consts::TAU * rng.next_f64();
+    let s = ((1.0 - z) * (1.0 + z)).sqrt();
+    V3::new(s * phi.cos(), s * phi.sin(), z)
+}
+
 /// SplitMix64 (Steele, Lea, Flood 2014): a deterministic stream, so the chi-square statistic
 /// below is the same on every run and machine.
 pub struct Rng(pub u64);

@@ -2,21 +2,7 @@
 //! directions their inputs are drawn from and the relative-error sweep against the exact tier.
 #![cfg(all(feature = "ggx", feature = "cook-torrance"))]
 
-use crate::common::Rng;
-use brdf::V3;
-
-/// A random unit direction of the upper hemisphere: n.v from 1e-6 to 1, log-uniform half the
-/// time (grazing angles, where the fast forms lose most), uniform in z otherwise.
-pub fn random_dir(rng: &mut Rng) -> V3<f64> {
-    let z = if rng.next_f64() < 0.5 {
-        libm::pow(10.0, -6.0 * rng.next_f64())
-    } else {
-        rng.next_f64()
-    };
-    let phi = core::f64::consts::TAU * rng.next_f64();
-    let s = ((1.0 - z) * (1.0 + z)).sqrt();
-    V3::new(s * phi.cos(), s * phi.sin(), z)
-}
+pub use crate::common::random_dir;
 
 /// |x - r| / |r|, 0 where x equals r (both 0 included).
 fn rel(x: f64, r: f64) -> f64 {

@@ -25,14 +25,8 @@ fn inputs(n: usize) -> Vec<([f64; 6], [f64; 3])> {
         .unwrap_or(0x10ca_1c0d);
     let mut rng = Rng(seed);
     let dir = |rng: &mut Rng| {
-        let z = if rng.next_f64() < 0.5 {
-            libm::pow(10.0, -6.0 * rng.next_f64())
-        } else {
-            rng.next_f64()
-        };
-        let phi = core::f64::consts::TAU * rng.next_f64();
-        let s = ((1.0 - z) * (1.0 + z)).sqrt();
-        [s * phi.cos(), s * phi.sin(), z]
+        let d = crate::common::random_dir(rng);
+        [d.x, d.y, d.z]
     };
     let mut out = Vec::with_capacity(n);
     while out.len() < n {

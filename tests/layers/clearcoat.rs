@@ -111,6 +111,30 @@ fn kelemen_against_exact_smith() {
     assert!(all < 19.5, "{all}");
 }
 
+/// The engine comparisons' grid: alpha = r^2 for five coat roughnesses r, and the cosines of
+/// view and light directions in the plane of incidence, on opposite sides of the normal,
+/// n.v and n.l each in 1/16, 2/16, ..., 1 (their half vector's n.h and v.h in f32).
+fn engine_grid() -> impl Iterator<Item = (f32, Cosines<f32>)> {
+    [0.1f32, 0.3, 0.5, 0.8, 1.0].into_iter().flat_map(|r| {
+        (1..=16).flat_map(move |i| {
+            (1..=16).map(move |j| {
+                let (nv, nl) = (i as f32 / 16.0, j as f32 / 16.0);
+                let (sv, sl) = ((1.0 - nv * nv).sqrt(), (1.0 - nl * nl).sqrt());
+                let hx = sv - sl;
+                let hz = nv + nl;
+                let len = (hx * hx + hz * hz).sqrt();
+                let c = Cosines {
+                    n_dot_v: nv,
+                    n_dot_l: nl,
+                    n_dot_h: hz / len,
+                    v_dot_h: (sv * hx + nv * hz) / len,
+                };
+                (r * r, c)
+            })
+        })
+    })
+}
+
 /// The Khronos glTF Sample Viewer, `source/Renderer/shaders/brdf.glsl` at commit
 /// d0b428c8946052cb640c4cf772686eb6c3abf3c2, `BRDF_specularGGX` with `F_Schlick`, `V_GGX`,
 /// `D_GGX`, as `getPunctualRadianceClearCoat` (`punctual.glsl`, commit
@@ -135,28 +159,12 @@ fn viewer_coat(n_dot_l: f32, n_dot_v: f32, n_dot_h: f32, v_dot_h: f32, alpha: f3
 #[test]
 fn sample_viewer_coat_agrees_to_f32_rounding() {
     let mut worst = 0.0f64;
-    for r in [0.1f32, 0.3, 0.5, 0.8, 1.0] {
-        let a = r * r;
-        for i in 1..=16 {
-            for j in 1..=16 {
-                let (nv, nl) = (i as f32 / 16.0, j as f32 / 16.0);
-                let (sv, sl) = ((1.0 - nv * nv).sqrt(), (1.0 - nl * nl).sqrt());
-                let hx = sv - sl;
-                let hz = nv + nl;
-                let len = (hx * hx + hz * hz).sqrt();
-                let (nh, vh) = (hz / len, (sv * hx + nv * hz) / len);
-                let c = Cosines {
-                    n_dot_v: nv,
-                    n_dot_l: nl,
-                    n_dot_h: nh,
-                    v_dot_h: vh,
-                };
-                let ours = f64::from(coat(c, a));
-                let theirs = f64::from(viewer_coat(nl, nv, nh, vh, a));
-                if theirs > 1e-20 {
-                    worst = worst.max((ours - theirs).abs() / theirs);
-                }
-            }
+    for (a, c) in engine_grid() {
+        let (nv, nl, nh, vh) = (c.n_dot_v, c.n_dot_l, c.n_dot_h, c.v_dot_h);
+        let ours = f64::from(coat(c, a));
+        let theirs = f64::from(viewer_coat(nl, nv, nh, vh, a));
+        if theirs > 1e-20 {
+            worst = worst.max((ours - theirs).abs() / theirs);
         }
     }
     println!("sample viewer clearcoat: max rel {worst:.2e}");
@@ -207,44 +215,28 @@ fn threejs_layer(outgoing: f32, coat: f32, clearcoat: f32, n_dot_v: f32) -> f32 
 fn threejs_coat_agrees_except_for_its_fresnel_fit() {
     let (mut dv_worst, mut dv_far) = (0.0f64, 0.0f64);
     let (mut f_worst, mut layer_worst) = (0.0f64, 0.0f64);
-    for r in [0.1f32, 0.3, 0.5, 0.8, 1.0] {
-        let a = r * r;
-        for i in 1..=16 {
-            for j in 1..=16 {
-                let (nv, nl) = (i as f32 / 16.0, j as f32 / 16.0);
-                let (sv, sl) = ((1.0 - nv * nv).sqrt(), (1.0 - nl * nl).sqrt());
-                let hx = sv - sl;
-                let hz = nv + nl;
-                let len = (hx * hx + hz * hz).sqrt();
-                let (nh, vh) = (hz / len, (sv * hx + nv * hz) / len);
-                let c = Cosines {
-                    n_dot_v: nv,
-                    n_dot_l: nl,
-                    n_dot_h: nh,
-                    v_dot_h: vh,
-                };
-                let ours = coat(c, a);
-                let theirs = threejs_coat(nl, nv, nh, vh, a);
-                if theirs > 1e-20 {
-                    // D V alone: each side's value divided by its own Fresnel.
-                    let ours_dv = f64::from(ours) / f64::from(brdf::layers::clearcoat::fresnel(vh));
-                    let theirs_dv = f64::from(theirs) / f64::from(threejs_f_schlick(0.04, 1.0, vh));
-                    let r = (ours_dv - theirs_dv).abs() / theirs_dv;
-                    if nh > 0.99 {
-                        dv_worst = dv_worst.max(r);
-                    } else {
-                        dv_far = dv_far.max(r);
-                    }
-                }
-                // The layering: the crate's `layer` given three.js's own coat and Fcc.
-                for (base, cc) in [(0.3f32, 1.0f32), (0.8, 0.5), (0.05, 0.25)] {
-                    let fcc = threejs_f_schlick(0.04, 1.0, nv);
-                    let ours = layer(V3::splat(base), theirs, cc, fcc).x;
-                    let theirs = threejs_layer(base, theirs, cc, nv);
-                    layer_worst =
-                        layer_worst.max(f64::from((ours - theirs).abs()) / f64::from(theirs.abs()));
-                }
+    for (a, c) in engine_grid() {
+        let (nv, nl, nh, vh) = (c.n_dot_v, c.n_dot_l, c.n_dot_h, c.v_dot_h);
+        let ours = coat(c, a);
+        let theirs = threejs_coat(nl, nv, nh, vh, a);
+        if theirs > 1e-20 {
+            // D V alone: each side's value divided by its own Fresnel.
+            let ours_dv = f64::from(ours) / f64::from(brdf::layers::clearcoat::fresnel(vh));
+            let theirs_dv = f64::from(theirs) / f64::from(threejs_f_schlick(0.04, 1.0, vh));
+            let r = (ours_dv - theirs_dv).abs() / theirs_dv;
+            if nh > 0.99 {
+                dv_worst = dv_worst.max(r);
+            } else {
+                dv_far = dv_far.max(r);
             }
+        }
+        // The layering: the crate's `layer` given three.js's own coat and Fcc.
+        for (base, cc) in [(0.3f32, 1.0f32), (0.8, 0.5), (0.05, 0.25)] {
+            let fcc = threejs_f_schlick(0.04, 1.0, nv);
+            let ours = layer(V3::splat(base), theirs, cc, fcc).x;
+            let theirs = threejs_layer(base, theirs, cc, nv);
+            layer_worst =
+                layer_worst.max(f64::from((ours - theirs).abs()) / f64::from(theirs.abs()));
         }
     }
     for k in 0..=4096 {

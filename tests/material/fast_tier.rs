@@ -51,16 +51,7 @@ fn cosines_of(v: V3<f64>, l: V3<f64>) -> [f64; 4] {
 /// base colours, metallic and roughness including 0 and 1, and F0 including 0 and 1.
 fn inputs(n: usize) -> Vec<([f64; 4], [f64; 6])> {
     let mut rng = Rng(0xfa57_7135);
-    let dir = |rng: &mut Rng| {
-        let z = if rng.next_f64() < 0.5 {
-            libm::pow(10.0, -6.0 * rng.next_f64())
-        } else {
-            rng.next_f64()
-        };
-        let phi = core::f64::consts::TAU * rng.next_f64();
-        let s = ((1.0 - z) * (1.0 + z)).sqrt();
-        V3::new(s * phi.cos(), s * phi.sin(), z)
-    };
+    let dir = crate::common::random_dir;
     let pick = |rng: &mut Rng| match (rng.next_f64() * 8.0) as u32 {
         0 => 0.0,
         1 => 1.0,
