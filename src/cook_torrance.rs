@@ -329,20 +329,38 @@ pub fn ggx_conductor_rgb_fast<T: Real>(
 /// [`fresnel::conductor`] (correctly rounded to a few ULP) for F: D V carries about twenty
 /// roundings, and the whole is within 1e-14 relative of the generic assembly [`conductor`]
 /// with [`crate::ggx::Ggx`] (D of the normalized h in double words, V from the vectors'
-/// components) on unit directions (2.4e-15 found). On `f32` and `f32x8` the same formulas
-/// are evaluated in f64 (`f32x8` as two `f64x4` halves, lane for lane the scalar operations),
-/// V's two square roots by multiply-adds from a bit-pattern seed (within 3.3e-11 relative
-/// each; the other three roots and the divisions by the hardware), and rounded to f32 once
-/// (a result below f32's smallest normal from normal numbers, as [`fresnel::conductor`]'s):
-/// within 1 ULP of the f64 tier on the same directions (0.50 found; `cargo test
+/// components) on unit directions (2.4e-15 found).
+///
+/// On `f32` and `f32x8` the same function is evaluated in f64 (`f32x8` as two `f64x4`
+/// halves, lane for lane the scalar operations) and rounded to f32 once (a result below f32's
+/// smallest normal number from normal numbers, as [`fresnel::conductor`]'s), in a form with
+/// fewer roots and divisions. F depends on the directions only through c = x / sqrt(y) with
+/// x = wo.s and y = |s|^2, and is unchanged when (x, y) is scaled to (r x, r^2 y): with z =
+/// N^2 - sin^2 = u + c^2 (u = N^2 - 1), y z = u y + x^2 is a polynomial, |c + s|^2 y, (A + B) y^2
+/// and A y^2 of [`fresnel::conductor`]'s form are polynomials in x, y, |y z| and
+/// sqrt(y (|z| + |Re z|)), so that F = num / (p^2 q) takes two square roots (|y z| and the
+/// one beneath the root of z) and neither |s| nor the quotient wo.s / |s|. r is the
+/// bit-pattern seed of 1 / sqrt(y), which puts y within 7 % of 1 and every magnitude where
+/// it was with c in [0, 1]. F's quotient is folded into D V's: f = (num alpha^2 |s|^4 g) /
+/// (2 pi p^2 q t^2 den g), g the seed of 1 / (t^2 den) squared, which keeps both products
+/// inside f64's normal range. V's two roots take an f32 reciprocal root (correctly rounded
+/// f32 `sqrt` and division, the same bits on every target) and one Newton step in f64
+/// (within 4e-14 relative). Error budget before the rounding to f32: the two roundings of r
+/// move c by 2^-52; F's polynomials, roots and products about thirty roundings of 2^-53;
+/// D V about twenty, V's roots 4e-14 each; together below 1e-13 relative, 2^-20 of an f32
+/// ULP beside the rounding's 0.5: within 1 ULP of the f64 tier on the same directions (0.5000
+/// found over 8 x 200 000 random directions and parameters and an edge grid of grazing,
+/// opposite and equal directions, alpha near both clamps, eta and k from 2^-126 to f32::MAX and
+/// eta within 2^-20 of 1, where F is well conditioned; `BRDF_TEST_SEED=<n> cargo test
 /// --all-features --test cook_torrance local:: -- --nocapture`).
 ///
 /// Run time on `f32x8` (a Zen 4 core, `-C target-cpu=native`, `bench/mitsuba/compare.py
-/// --n 1000000`, idle): 6.44 ms per 10^6 hemisphere direction pairs times n.l, 3.15 times
-/// Mitsuba 3's LLVM back end on the same pairs in the same run (2.04 ms, whose f32 arithmetic
-/// is 21 ULP off where this is 1.5); with V's roots on `vsqrtpd` it took 3.7 times in an
-/// earlier run. More in
-/// `bench/mitsuba/README.md`.
+/// --n 1000000`, one interleaved run, load average 6.7 on 2 cores): 5.44 ms per 10^6
+/// hemisphere direction pairs times n.l, 2.64 times Mitsuba 3's LLVM back end on the same
+/// pairs (2.06 ms, whose f32 arithmetic is 21 ULP off where this is 1.5), where the form
+/// with |s|, the quotient wo.s / |s| and three divisions took 3.15 times. F's two nested
+/// roots and the one division lie one after the other on its longest chain of dependent
+/// operations. More in `bench/mitsuba/README.md`.
 ///
 /// Sources: as [`ggx_conductor_rgb`]; the half-vector form of D as Mitsuba 3's
 /// `MicrofacetDistribution::eval` (`include/mitsuba/render/microfacet.h`).
@@ -411,27 +429,59 @@ impl crate::real::sealed::Widened<9> for ConductorLocal {
     fn wide<W: Real<Scalar = f64>>(self, [vx, vy, vz, lx, ly, lz, a, eta, k]: [W; 9]) -> W {
         // Sums of two f32 components and their squares carry a rounding of 2^-53 at most; no
         // intermediate leaves f64's normal range for f32 inputs (|s| >= 2^-149 where it is not
-        // 0). The cap at f32's largest finite value keeps D V F finite after the rounding. The
-        // roots of |s| and of F stay on `vsqrtpd`: they lie on the longest chain of dependent
-        // operations, where a multiply-add root (thirteen steps) would lengthen it.
+        // 0). The cap at f32's largest finite value keeps D V F finite after the rounding.
+        // The longest chain of dependent operations runs through F's two nested roots (on
+        // `vsqrtpd`) and the one division; everything else is arranged beside it.
         let (wo, wi) = (V3::new(vx, vy, vz), V3::new(lx, ly, lz));
         let s = wo + wi;
         let (sxy, ss) = local_sums(s);
-        let v_dot_h = (wo.dot(s) / ss.sqrt()).saturate();
-        let f = fresnel::Conductor.wide([v_dot_h, eta, k]);
-        // V's two roots lie beside that chain: by multiply-adds they leave the divider to it
-        // (`crate::widen::sqrt`, within 3.3e-11 relative, from below; its argument
-        // alpha^2 (1 - c^2) + c^2 lies in [1e-8, 1e8] for the clamped alpha). On `vsqrtpd`
-        // (about seventeen multiply-adds of throughput each on a Zen 4 core) they would
-        // queue with the three roots and three divisions of |s|, F and D V: the rough
-        // conductor took 7.58 ms per 10^6 `f32x8` elements with them, 6.35 ms without
-        // (`bench/mitsuba/compare.py`).
+        let (f_num, f_p, f_q) = fresnel::ConductorWide::new(eta, k).of_projection(wo.dot(s), ss);
+        // V's two roots from f32 seeds (`sqrt_by_f32`; their argument
+        // alpha^2 (1 - c^2) + c^2 lies in [1e-8, 1e8] for the clamped alpha).
         let cap = W::splat(f64::from(f32::MAX));
         let (cv, cl) = (vz.saturate(), lz.saturate());
-        let dv = local_dv(s.z, sxy, ss, cv, cl, a, cap, crate::widen::sqrt);
+        let a2 = a * a;
+        let t = a2.mul_add(s.z * s.z, sxy);
+        let root = |c: W| sqrt_by_f32(a2.mul_add(crate::microfacet::sin2_working(c), c * c));
+        let den = cl.mul_add(root(cv), cv * root(cl));
+        let num = (a2 * W::splat(0.5 * core::f64::consts::FRAC_1_PI)) * (ss * ss);
+        // D V = num / dv_den lies in [2^-50, 2^243] for f32 inputs, dv_den in [2^-812, 2^75]:
+        // both scaled by g^2 (g the seed of 1 / sqrt(dv_den), within 3.5 %), the numerator
+        // is about D V and the denominator F's p^2 q (below 2^900) times about 1, so the one
+        // quotient of D V F meets no overflow where F's own would not (F's numerator exceeds
+        // 2^780 only for |N| so large that F is near 1, where D V F above f32::MAX is capped
+        // as it should be). The floor keeps 0 / 0 out where t^2 den underflows (it does not
+        // for f32 inputs).
+        let dv_den = ((t * t) * den).max(W::MIN_POSITIVE);
+        let g = dv_den.rsqrt_bits(crate::real::sealed::Token::NEW);
+        let g2 = g * g;
+        let value = (((num * g2) * f_num) / ((f_p * f_p) * (f_q * (dv_den * g2)))).min(cap);
         let above = vz.simd_gt(W::ZERO) & lz.simd_gt(W::ZERO);
-        W::select(above, dv * f, W::ZERO)
+        W::select(above, value, W::ZERO)
     }
+}
+
+/// sqrt(x) for x in [2^-100, 2^100] on f64 lanes (f64, f64x4), within 4e-14 relative: the
+/// f32 reciprocal root y0 = 1 / sqrt(fl32(x)) (two correctly rounded f32 operations, the
+/// same bits on every target and lane type; within 1.3 2^-23 of 1 / sqrt(x)), then one
+/// Newton step in f64, s0 = x y0, sqrt(x) = s0 + y0 (x - s0^2) / 2, which leaves
+/// -1.5 (y0 sqrt(x) - 1)^2 and a few roundings of 2^-53. Four f32 lanes of root and quotient
+/// take the divider for less time than four f64 lanes of one root, and three f64 operations
+/// follow, where `crate::widen::sqrt` takes thirteen (`sqrt_by_f32_is_within_its_stated_error`).
+#[cfg(feature = "ggx")]
+#[inline]
+fn sqrt_by_f32<W: Real<Scalar = f64>>(x: W) -> W {
+    let mut lanes = [1.0f32; 4];
+    for (i, lane) in lanes.iter_mut().enumerate().take(W::LANES) {
+        #[allow(clippy::cast_possible_truncation)] // the rounding to f32 is the seed
+        {
+            *lane = x.lane(i) as f32;
+        }
+    }
+    let y0 = (wide::f32x4::ONE / wide::f32x4::new(lanes).sqrt()).to_array();
+    let y0 = W::from_fn(|i| f64::from(y0[i]));
+    let s0 = x * y0;
+    (y0 * W::HALF).mul_add((-s0).mul_add(s0, x), s0)
 }
 
 /// s_x^2 + s_y^2 and |s|^2.
@@ -706,4 +756,38 @@ pub fn beckmann_dielectric<T: Real>(c: Cosines<T>, alpha: Alpha<T>, eta: T) -> T
     let f = fresnel::dielectric(c.v_dot_h.saturate(), eta);
     let dv = beckmann_dv(c, alpha);
     assemble(dv, c, alpha, f)
+}
+
+#[cfg(all(test, feature = "ggx"))]
+mod tests {
+    use super::sqrt_by_f32;
+
+    /// `sqrt_by_f32` within its stated 4e-14 (relative, from below, to a few roundings of
+    /// 2^-53) of the correctly rounded f64 root over [2^-100, 2^100] (a geometric sweep of
+    /// about 10^7 points, and the powers of two with their neighbours), lanes equal to the
+    /// scalar.
+    #[test]
+    fn sqrt_by_f32_is_within_its_stated_error() {
+        let mut worst = 0.0f64;
+        let mut check = |x: f64| {
+            let got = sqrt_by_f32(x);
+            let rel = got / x.sqrt() - 1.0;
+            assert!(rel.abs() <= 4e-14 && rel <= 4e-16, "sqrt({x:e}): {rel:e}");
+            let lanes = sqrt_by_f32(crate::wide::f64x4::splat(x)).to_array();
+            assert!(lanes.iter().all(|l| l.to_bits() == got.to_bits()), "{x:e}");
+            worst = worst.max(rel.abs());
+        };
+        let mut x = libm::exp2(-100.0);
+        while x < libm::exp2(100.0) {
+            check(x);
+            x *= 1.000_013_7;
+        }
+        for e in -100..=100 {
+            let p = libm::exp2(f64::from(e));
+            for q in [p, p * (1.0 + f64::EPSILON), p * (1.0 - f64::EPSILON / 2.0)] {
+                check(q);
+            }
+        }
+        assert!(worst <= 4e-14, "{worst:e}");
+    }
 }

@@ -694,9 +694,9 @@ impl crate::real::sealed::Widened<3> for Conductor {
 }
 
 /// The part of [`Conductor`]'s f64 evaluation that depends on eta and k alone (computed once
-/// in a loop with fixed parameters), and its tail from the cosine and the root s = sqrt(z),
-/// z = N^2 - sin^2 theta_i: shared by [`Conductor`] and `cook_torrance::ggx_conductor_local`,
-/// which forms |z| and sqrt(|z| + |Re z|) from the half vector's components without the cosine.
+/// in a loop with fixed parameters), and two tails: from the cosine and the root s = sqrt(z),
+/// z = N^2 - sin^2 theta_i ([`Conductor`]), and from wo.s and |s|^2 of the unnormalized
+/// half vector, without the cosine (`cook_torrance::ggx_conductor_local`).
 #[derive(Clone, Copy)]
 pub(crate) struct ConductorWide<W> {
     /// Re(N^2) = eta^2 - k^2.
@@ -764,6 +764,66 @@ impl<W: Real<Scalar = f64>> ConductorWide<W> {
         let no_interface = self.u_abs2.simd_eq(W::ZERO);
         let grazing = W::select(no_interface, W::ZERO, W::ONE);
         W::select(c.simd_gt(W::ZERO), ratio.min(W::ONE), grazing)
+    }
+
+    /// F at the cosine c = x / sqrt(y) (saturated to [0, 1]) without forming c: from x = wo.s
+    /// and y = |s|^2 of the unnormalized half vector s = wo + wi (`cook_torrance`'s exact rough
+    /// conductor), as F = num / (p^2 q) with (num, p, q) returned, all positive, so that the
+    /// caller can fold the one division into its own.
+    #[inline]
+    pub(crate) fn of_projection(self, x: W, y: W) -> (W, W, W) {
+        // F depends on c alone, and c on x / sqrt(y): (x, y) may be scaled by (r, r^2) for any
+        // r > 0. r = the bit-pattern seed of 1 / sqrt(y) (within 3.5 %) puts y within 7 % of
+        // 1, so that every magnitude below is that of `ratio` with c in [0, 1]; its two
+        // roundings move c by 2^-52 at most. Saturation: x >= 0 and x^2 <= y (y := max(y,
+        // x^2), which is c = 1 where c would exceed 1).
+        let x = x.max(W::ZERO);
+        let r = y.rsqrt_bits(crate::real::sealed::Token::NEW);
+        let (x, y) = (x * r, y * (r * r));
+        let x2 = x * x;
+        let y = y.max(x2);
+        // In units of y: s2 y = y - x^2 (exact: Sterbenz), z y = u y + x^2. Its rounding and
+        // that of x^2 (2^-53 of y each) are those of c^2 itself, which `ratio`'s second form
+        // N^2 - s2 cannot undo either: c is a rounded quotient there.
+        let s2 = y - x2;
+        let z_re = self.u_re.mul_add(y, x2);
+        let z_im = self.b * y;
+        let norm = z_re.mul_add(z_re, z_im * z_im).sqrt();
+        let t = (norm + z_re.abs()).sqrt();
+        // As `ratio` with c^2 |s|^2 -> x^2 |z y|, s2 -> s2 y, c 2 Re(s) -> x h / w (the powers
+        // of y cancel between 2 Re(s) = h / w and c = x / sqrt(y)): the terms of A, A + B and
+        // |c + s|^2 gain the factors y^2, y^2 and y, so F = |u|^2 y^2 A w^3 / (p^2 q) with
+        // p = |c + s|^2 y w and q = (A + B) y^2 w. Both p and q are linear in t, their
+        // coefficients known before the second root: where Re z >= 0 (h = sqrt(2) t, w = 1)
+        // p = (x^2 + |z y|) + sqrt(2) x t, q = A y^2 + sqrt(2) x s2 t; elsewhere (h = sqrt(2)
+        // |Im z y|, w = t) p = (x^2 + |z y|) t + sqrt(2) x |Im z y| and q = A y^2 t + sqrt(2)
+        // x s2 |Im z y|, there times lambda = 2^-100 where |z y| > 2^200 (|N| above about
+        // 2^100), which keeps w^3 and p^2 q (up to |N|^9) below 2^900.
+        let pos = z_re.simd_ge(W::ZERO);
+        let lambda = W::select(
+            norm.simd_gt(W::splat(1.606_938_044_258_990_3e60)),
+            W::splat(7.888_609_052_210_118e-31),
+            W::ONE,
+        );
+        let xr = W::splat(core::f64::consts::SQRT_2) * x;
+        let e = x2 + norm;
+        let a_par = x2.mul_add(norm, s2 * s2);
+        let xs = xr * s2;
+        let im = z_im * lambda;
+        let p = W::select(pos, xr, e * lambda).mul_add(t, W::select(pos, e, xr * im));
+        let q = W::select(pos, xs, a_par * lambda).mul_add(t, W::select(pos, a_par, xs * im));
+        let tl = t * lambda;
+        let w3 = W::select(pos, W::ONE, tl * tl * tl);
+        let num = (self.u_abs2 * (y * y)) * (a_par * w3);
+        // At c = 0 the ratio is 1 only to rounding: 1, or 0 without an interface (N = 1).
+        let no_interface = self.u_abs2.simd_eq(W::ZERO);
+        let grazing = W::select(no_interface, W::ZERO, W::ONE);
+        let inside = x.simd_gt(W::ZERO);
+        (
+            W::select(inside, num, grazing),
+            W::select(inside, p, W::ONE),
+            W::select(inside, q, W::ONE),
+        )
     }
 }
 

@@ -179,3 +179,102 @@ fn local_lanes_equal_scalars_bit_for_bit() {
         }
     }
 }
+
+/// The f32 tier against the f64 tier at the edges of the domain: grazing directions (cosines
+/// down to 2^-120), nearly opposite directions (|wo + wi| down to about 2^-60), wo = wi
+/// (c = 1), alpha near both clamps, eta and k from the smallest normal f32 to f32::MAX with eta
+/// within 2^-20 of 1: within 1 ULP where F is well conditioned (k >= 0.1 or eta >= 1, as
+/// `inputs`), and finite and non-negative everywhere (the largest ULP distance found is
+/// printed).
+#[test]
+fn local_f32_within_one_ulp_of_the_f64_tier_at_the_extremes() {
+    let etas = [
+        f64::from(f32::MIN_POSITIVE),
+        1e-10,
+        1e-4,
+        0.05,
+        0.2,
+        1.0 - libm::exp2(-20.0),
+        1.0,
+        1.0 + libm::exp2(-20.0),
+        1.5,
+        10.0,
+        1e4,
+        1e10,
+        1e30,
+        f64::from(f32::MAX),
+    ];
+    let ks = [
+        0.0,
+        f64::from(f32::MIN_POSITIVE),
+        1e-10,
+        1e-3,
+        0.1,
+        1.0,
+        3.0,
+        1e4,
+        1e10,
+        1e30,
+        f64::from(f32::MAX),
+    ];
+    // Just above ALPHA_MIN: 1e-4 itself rounds below it in f32, which the f32 tier clamps
+    // to f32(1e-4) and the f64 tier to 1e-4 (D V moves by 7.6e-8 between the two).
+    let alphas = [1.001e-4, 1e-3, 0.3, 1.0, 1e4];
+    // Direction pairs: (z of wo, z of wi, azimuth between them).
+    let mut pairs = Vec::new();
+    for zo in [
+        libm::exp2(-120.0),
+        libm::exp2(-60.0),
+        1e-6,
+        0.01,
+        0.3,
+        0.9,
+        1.0,
+    ] {
+        for zi in [libm::exp2(-120.0), libm::exp2(-30.0), 1e-6, 0.2, 0.7, 1.0] {
+            for phi in [
+                0.0,
+                1e-7,
+                0.5,
+                2.0,
+                core::f64::consts::PI - 1e-7,
+                core::f64::consts::PI,
+            ] {
+                pairs.push((zo, zi, phi));
+            }
+        }
+    }
+    let dir = |z: f64, phi: f64| {
+        let s = libm::sqrt((1.0 - z) * (1.0 + z));
+        [s * libm::cos(phi), s * libm::sin(phi), z].map(|x| f64::from(x as f32))
+    };
+    let (mut worst, mut checked) = (0.0f64, 0usize);
+    for &(zo, zi, phi) in &pairs {
+        let (o, i) = (dir(zo, 0.4), dir(zi, 0.4 + phi));
+        let d = [o[0], o[1], o[2], i[0], i[1], i[2]];
+        for &alpha in &alphas {
+            for &eta in &etas {
+                for &k in &ks {
+                    let p = [alpha, eta, k].map(|x| f64::from(x as f32));
+                    let got = eval::<f32>(d, p, false);
+                    assert!(got.is_finite() && got >= 0.0, "{got} at {d:?} {p:?}");
+                    if !(k >= 0.1 || eta >= 1.0) {
+                        continue;
+                    }
+                    let want = eval::<f64>(d, p, false);
+                    if want > f64::from(f32::MAX) {
+                        assert_eq!(got, f32::MAX, "{d:?} {p:?}");
+                        continue;
+                    }
+                    let u = ulp32(got, want);
+                    assert!(u <= 1.0, "{u} ULP at {d:?} {p:?}: {got:e} vs {want:e}");
+                    worst = worst.max(u);
+                    checked += 1;
+                }
+            }
+        }
+    }
+    println!(
+        "ggx_conductor_local f32 against f64 at the extremes: max {worst:.4} ULP over {checked}"
+    );
+}
