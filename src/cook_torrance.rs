@@ -331,27 +331,26 @@ pub fn ggx_conductor_rgb_fast<T: Real>(
 /// with [`crate::ggx::Ggx`] (D of the normalized h in double words, V from the vectors'
 /// components) on unit directions (2.4e-15 found).
 ///
-/// On `f32` and `f32x8` the same function is evaluated in f64 (`f32x8` as two `f64x4`
-/// halves, lane for lane the scalar operations) and rounded to f32 once (a result below f32's
-/// smallest normal number from normal numbers, as [`fresnel::conductor`]'s), in a form with
-/// fewer roots and divisions. F depends on the directions only through c = x / sqrt(y) with
-/// x = wo.s and y = |s|^2, and is unchanged when (x, y) is scaled to (r x, r^2 y): with z =
-/// N^2 - sin^2 = u + c^2 (u = N^2 - 1), y z = u y + x^2 is a polynomial, |c + s|^2 y, (A + B) y^2
-/// and A y^2 of [`fresnel::conductor`]'s form are polynomials in x, y, |y z| and
-/// sqrt(y (|z| + |Re z|)), so that F = num / (p^2 q) takes two square roots (|y z| and the
-/// one beneath the root of z) and neither |s| nor the quotient wo.s / |s|. r is the
-/// bit-pattern seed of 1 / sqrt(y), which puts y within 7 % of 1 and every magnitude where
-/// it was with c in [0, 1]. F's quotient is folded into D V's: f = (num alpha^2 |s|^4 g) /
-/// (2 pi p^2 q t^2 den g), g the seed of 1 / (t^2 den) squared, which keeps both products
-/// inside f64's normal range. V's two roots take an f32 reciprocal root (correctly rounded
-/// f32 `sqrt` and division, the same bits on every target) and one Newton step in f64
-/// (within 4e-14 relative). Error budget before the rounding to f32: the two roundings of r
-/// move c by 2^-52; F's polynomials, roots and products about thirty roundings of 2^-53;
-/// D V about twenty, V's roots 4e-14 each; together below 1e-13 relative, 2^-20 of an f32
-/// ULP beside the rounding's 0.5: within 1 ULP of the f64 tier on the same directions (0.5000
-/// found over 8 x 200 000 random directions and parameters and an edge grid of grazing,
-/// opposite and equal directions, alpha near both clamps, eta and k from 2^-126 to f32::MAX and
-/// eta within 2^-20 of 1, where F is well conditioned; `BRDF_TEST_SEED=<n> cargo test
+/// On `f32` and `f32x8` the same function is evaluated in f64 (`f32x8` as two `f64x4` halves, lane
+/// for lane the scalar operations) and rounded to f32 once (a result below f32's smallest normal
+/// number from normal numbers, as [`fresnel::conductor`]'s), in a form with fewer roots and
+/// divisions. F depends on the directions only through c = x / sqrt(y) with x = wo.s and y = |s|^2,
+/// and is unchanged when (x, y) is scaled to (r x, r^2 y): with z = N^2 - sin^2 = u + c^2
+/// (u = N^2 - 1), y z = u y + x^2 is a polynomial, |c + s|^2 y, (A + B) y^2 and A y^2 of
+/// [`fresnel::conductor`]'s form are polynomials in x, y, |y z| and sqrt(y (|z| + |Re z|)), so that
+/// F = num / (p^2 q) takes two square roots (|y z| and sqrt(|y z| + |Re y z|)) and neither |s| nor
+/// the quotient wo.s / |s|. r is the bit-pattern seed of 1 / sqrt(y), which puts y within 7 % of 1
+/// and every magnitude where it was with c in [0, 1]. F's quotient is folded into D V's:
+/// f = (num alpha^2 |s|^4 g) / (2 pi p^2 q t^2 den g), g the square of the bit-pattern seed of
+/// 1 / sqrt(t^2 den), which keeps both products inside f64's normal range. V's two roots take an
+/// f32 reciprocal root (correctly rounded f32 `sqrt` and division, the same bits on every target)
+/// and one Newton step in f64 (within 4e-14 relative). Error budget before the rounding to f32: the
+/// two roundings of r move c by 2^-52; F's polynomials, roots and products about thirty roundings
+/// of 2^-53; D V about twenty, V's roots 4e-14 each; together below 1e-13 relative, 2e-6 of an f32
+/// ULP beside the rounding's 0.5: within 1 ULP of the f64 tier on the same directions (0.500 found
+/// over 40 x 200 000 random directions and parameters, seeds 1 to 40, and 0.5000 on an edge grid of
+/// grazing, opposite and equal directions, alpha near both clamps, eta and k from 2^-126 to
+/// f32::MAX and eta within 2^-20 of 1, where F is well conditioned; `BRDF_TEST_SEED=<n> cargo test
 /// --all-features --test cook_torrance local:: -- --nocapture`).
 ///
 /// Run time on `f32x8` (a Zen 4 core, `-C target-cpu=native`, `bench/mitsuba/compare.py

@@ -770,6 +770,7 @@ impl<W: Real<Scalar = f64>> ConductorWide<W> {
     /// and y = |s|^2 of the unnormalized half vector s = wo + wi (`cook_torrance`'s exact rough
     /// conductor), as F = num / (p^2 q) with (num, p, q) returned, all positive, so that the
     /// caller can fold the one division into its own.
+    #[cfg(all(feature = "ggx", feature = "cook-torrance"))]
     #[inline]
     pub(crate) fn of_projection(self, x: W, y: W) -> (W, W, W) {
         // F depends on c alone, and c on x / sqrt(y): (x, y) may be scaled by (r, r^2) for any
