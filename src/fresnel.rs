@@ -693,6 +693,18 @@ impl crate::real::sealed::Widened<3> for Conductor {
     }
 }
 
+/// 2^-100 where |z| > 2^200 (|N| above about 2^100), else 1: the common factor of h and w in
+/// [`ConductorWide`]'s 2 Re(s) = h / w, which keeps w^3 and the ratio's denominator (up to
+/// |N|^9) below 2^900.
+#[inline]
+fn big_root_scale<W: Real<Scalar = f64>>(norm: W) -> W {
+    W::select(
+        norm.simd_gt(W::splat(1.606_938_044_258_990_3e60)),
+        W::splat(7.888_609_052_210_118e-31),
+        W::ONE,
+    )
+}
+
 /// The part of [`Conductor`]'s f64 evaluation that depends on eta and k alone (computed once
 /// in a loop with fixed parameters), and two tails: from the cosine and the root s = sqrt(z),
 /// z = N^2 - sin^2 theta_i ([`Conductor`]), and from wo.s and |s|^2 of the unnormalized
@@ -749,11 +761,7 @@ impl<W: Real<Scalar = f64>> ConductorWide<W> {
         let pos = z_re.simd_ge(W::ZERO);
         // h / w is unchanged by a common factor: 2^-100 where |z| > 2^200 (|N| above about
         // 2^100) keeps the numerator's and the denominator's w^3 (up to |N|^9) below 2^900.
-        let lambda = W::select(
-            norm.simd_gt(W::splat(1.606_938_044_258_990_3e60)),
-            W::splat(7.888_609_052_210_118e-31),
-            W::ONE,
-        );
+        let lambda = big_root_scale(norm);
         let h = root2 * W::select(pos, t, self.b * lambda);
         let w = W::select(pos, W::ONE, t * lambda);
         let pw = c.mul_add(c.mul_add(w, h), norm * w);
@@ -801,11 +809,7 @@ impl<W: Real<Scalar = f64>> ConductorWide<W> {
         // x s2 |Im z y|, there times lambda = 2^-100 where |z y| > 2^200 (|N| above about
         // 2^100), which keeps w^3 and p^2 q (up to |N|^9) below 2^900.
         let pos = z_re.simd_ge(W::ZERO);
-        let lambda = W::select(
-            norm.simd_gt(W::splat(1.606_938_044_258_990_3e60)),
-            W::splat(7.888_609_052_210_118e-31),
-            W::ONE,
-        );
+        let lambda = big_root_scale(norm);
         let xr = W::splat(core::f64::consts::SQRT_2) * x;
         let e = x2 + norm;
         let a_par = x2.mul_add(norm, s2 * s2);
