@@ -540,11 +540,22 @@ impl<T: Real> Microfacet<T> for Beckmann<T> {
 #[must_use]
 pub fn d<T: Real>(n_dot_h: T, alpha: T) -> T {
     let a = clamp_alpha(alpha);
-    // c <= 0 gives D = 0 through E = +inf (`DIso`); NaN is restored last, since the f32
-    // rounding does not keep it.
-    let c = n_dot_h.max(T::ZERO).min(T::ONE);
+    // NaN is restored last, since the f32 rounding does not keep it. On f64 types c <= 0
+    // gives D = 0 through E = +inf (`DIso::native`); on f32 types the cosine is raised to
+    // the floor of `DIso::wide` here, in f32 (c <= 0 included).
+    let lo = if crate::dw::single::<T>() {
+        c_floor_f32(a)
+    } else {
+        T::ZERO
+    };
+    let c = n_dot_h.max(lo).min(T::ONE);
     let value = T::via_f64([c, a], DIso, crate::real::sealed::Token::NEW);
-    nan_where(a.is_nan() | n_dot_h.is_nan(), value)
+    if crate::dw::single::<T>() {
+        // NaN reaches D through the f64 evaluation and its rounding (`DIso::factors`).
+        value
+    } else {
+        nan_where(a.is_nan() | n_dot_h.is_nan(), value)
+    }
 }
 
 /// Above this exponent E the isotropic D is below 2^-150 for every alpha in [ALPHA_MIN,
@@ -552,6 +563,13 @@ pub fn d<T: Real>(n_dot_h: T, alpha: T) -> T {
 /// D = e^-E E^2 alpha^2 / (pi s2^2) <= 4e8 e^-E E^2 / pi < 1e-74 where c^2 <= 1/2 (s2 >= 1/2),
 /// and D = e^-E / (pi alpha^2 c^4) <= 4 e^-E / (pi 1e-8) < 1e-79 where c^2 > 1/2.
 const E_ZERO_F32: f64 = 200.0;
+
+/// The cosine below which `d` on f32 types raises n_dot_h, where E = E_ZERO_F32:
+/// 1 / sqrt(1 + 200 alpha^2), in f32 (see [`d`]).
+#[inline]
+fn c_floor_f32<T: Real>(a: T) -> T {
+    (a * a).mul_add(T::splat(E_ZERO_F32), T::ONE).sqrt().recip()
+}
 
 /// The isotropic D of `d` for c = min(n_dot_h, 1) and the clamped alpha (c <= 0 is replaced
 /// by the caller): double words in f64 and f64x4, one f64 evaluation rounded once in f32 and
@@ -569,33 +587,54 @@ impl crate::real::sealed::Widened<2> for DIso {
         crate::domain::above(c, exp_neg_over(e, den))
     }
 
+    /// D before its rounding to f32 (`single` and `lanes8` below round D's two factors
+    /// with `crate::widen`'s subnormal-safe rounding instead).
     #[inline]
-    fn wide<W: Real<Scalar = f64>>(self, [c, a]: [W; 2]) -> W {
-        // c^2 and alpha^2 are exact (48 significant bits). Cosines whose E would exceed 200
-        // (c^2 (1 + 200 alpha^2) < 1) are raised to the cosine where E = 200: D there is below
-        // 2e-75 for every alpha in [ALPHA_MIN, ALPHA_MAX] (E_ZERO_F32), so it rounds to 0 in
-        // f32 as the true D does, E stays <= 200 (up to a few units of 2^-53) without a
-        // select, and c = 0 needs no case of its own. The floor depends on alpha alone, so in
-        // a loop over cosines with one alpha it is computed once.
-        let a2 = a * a;
-        let c2 = (c * c).max(a2.mul_add(W::splat(E_ZERO_F32), W::ONE).recip());
-        // 1 - c^2, 1 / alpha^2 and q = (1 / alpha^2) / c^2 (the division takes c^2 directly,
-        // the shortest path to it) round once each, so E = (1 - c^2) q is within 4 units of
-        // 2^-53 of itself, an absolute error below 1e-13 for E <= 200 (against the
-        // polynomial's 2.6e-9 relative). No intermediate is subnormal.
-        let s2 = W::ONE - c2;
-        let q = a2.recip() / c2;
-        let e = s2 * q;
-        // k = round(E log2(e)) from (1 - c^2) log2(e) and q, beside E rather than after it.
-        let s2_log2e = s2 * W::splat(core::f64::consts::LOG2_E);
-        let k = crate::widen::round_product(s2_log2e, q);
-        let (p, two_k) = crate::widen::exp_neg_split_k(e, k);
-        // D = e^-E / (pi c^4 alpha^2) = p 2^-k q^2 alpha^2 / pi, the factors other than p
-        // multiplied while p is evaluated; for E <= 200 and q <= 1e8 / c^2 every factor and
-        // product lies between 1e-88 and 1e204.
-        p * (two_k * ((q * q) * (a2 * W::splat(core::f64::consts::FRAC_1_PI))))
+    fn wide<W: Real<Scalar = f64>>(self, x: [W; 2]) -> W {
+        let (p, rest) = Self::factors(x);
+        p * rest
+    }
+
+    #[inline]
+    fn single(self, x: [f32; 2]) -> f32 {
+        let (p, rest) = Self::factors(x.map(f64::from));
+        crate::widen::join_tiny_f32(
+            crate::widen::tiny_big(p, rest),
+            crate::widen::tiny_small(p, rest),
+        )
+    }
+
+    #[inline]
+    fn lanes8(self, x: [crate::wide::f32x8; 2]) -> crate::wide::f32x8 {
+        use crate::real::widen_half;
+        let (p0, r0) = Self::factors(x.map(|v| widen_half(v, 0)));
+        let (p1, r1) = Self::factors(x.map(|v| widen_half(v, 4)));
+        crate::widen::join_tiny_f32x8(
+            [crate::widen::tiny_big(p0, r0), crate::widen::tiny_big(p1, r1)],
+            [crate::widen::tiny_small(p0, r0), crate::widen::tiny_small(p1, r1)],
+        )
     }
 }
+
+impl DIso {
+    /// D = 2^-f (2^-k q^2 alpha^2 / pi) as (2^-f, the rest), from c (raised to the floor in
+    /// f32 by [`d`]) and the clamped alpha, widened from f32 (see [`d`]).
+    #[inline]
+    fn factors<W: Real<Scalar = f64>>([c, a]: [W; 2]) -> (W, W) {
+        let c2 = c * c;
+        // q log2(e) = (log2(e) / alpha^2) / c^2; a factor of alpha alone is computed once
+        // in a loop over cosines.
+        let q_l = ((a * a).recip() * W::splat(core::f64::consts::LOG2_E)) / c2;
+        let x = (W::ONE - c2) * q_l;
+        let k = x.floor();
+        let p = crate::widen::exp2_neg_unit(x - k);
+        let qb = q_l * (a * W::splat(LN2_OVER_SQRT_PI));
+        (p, crate::widen::pow2_neg(k) * (qb * qb))
+    }
+}
+
+/// ln(2) / sqrt(pi): q log2(e) times alpha times this is q alpha / sqrt(pi).
+const LN2_OVER_SQRT_PI: f64 = 0.391_066_419_137_416_97;
 
 /// Isotropic Beckmann NDF in working precision, the fast companion of [`d`]: the same
 /// D = exp(-tan^2 / alpha^2) / (pi alpha^2 c^4) (Walter et al. 2007 eq. 25) with one division

@@ -58,6 +58,69 @@ pub(crate) fn round_tiny_f32(y: f64) -> f32 {
     f32::from_bits(big.wrapping_add(small).wrapping_sub(0x0100_0000))
 }
 
+/// 2^149: scales f32's subnormal spacing 2^-149 to 1.
+const TWO_POW_149: f64 = 7.136_238_463_529_8e44;
+
+/// big = max(p x, 2^-126) of the rounding of y = p x by [`tiny_small`] and [`join_tiny_f32`]
+/// (p in [0.5 (1 - 2^-25), 1 + 2^-25], x >= 0, p x a normal f64 or 0): a normal number,
+/// fl32(y) once converted where y >= 2^-126, 2^-126 (bits 0x0080_0000) elsewhere. NaN in p
+/// gives NaN.
+#[inline]
+#[must_use]
+pub(crate) fn tiny_big<W: Real<Scalar = f64>>(p: W, x: W) -> W {
+    (p * x).max(W::splat(F32_MIN_POSITIVE))
+}
+
+/// small = min(p (x 2^149) + 1.5 2^52 - 2^23, 1.5 2^52), one multiply-add and a min, for
+/// [`join_tiny_f32`]: its low 32 bits are n - 2^23 for n = min(round(y 2^149), 2^23), in two's
+/// complement. round(y 2^149) is y rounded to f32's subnormal spacing 2^-149 in units of it,
+/// to nearest, ties to even, from the exact product where the multiply-add is fused (from
+/// fl64(p x) otherwise): the bit pattern of fl32(y) wherever y < 2^-126 (2^-126's own,
+/// 0x0080_0000, included), and at least 2^23 elsewhere, where the min caps it (the sum is
+/// monotonic in y, and its low 32 bits wrap only beyond the cap). x 2^149 is exact (x is a
+/// normal f64). NaN gives the cap.
+#[inline]
+#[must_use]
+pub(crate) fn tiny_small<W: Real<Scalar = f64>>(p: W, x: W) -> W {
+    let n = p.mul_add(x * W::splat(TWO_POW_149), W::splat(ROUND - 8_388_608.0));
+    W::splat(ROUND).min(n)
+}
+
+/// fl32(y) from [`tiny_big`] and [`tiny_small`] without a subnormal operand or result in any
+/// instruction: fl32(big)'s bits plus the low 32 bits of small, n - 2^23. Where y >= 2^-126,
+/// fl32(big) = fl32(y) and n - 2^23 = 0; where y < 2^-126, fl32(big) = 2^-126, whose bits
+/// are 2^23, and the sum is n, fl32(y)'s bits. No comparison of y; after the product p x
+/// the rounding adds a max, a conversion and one integer addition to the kernel's path (the
+/// multiply-add and min of small run beside them). NaN in big gives NaN.
+#[inline]
+#[must_use]
+#[allow(clippy::cast_possible_truncation)] // the low 32 bits are the point
+pub(crate) fn join_tiny_f32(big: f64, small: f64) -> f32 {
+    f32::from_bits(round_f32(big).to_bits().wrapping_add(small.to_bits() as u32))
+}
+
+/// [`join_tiny_f32`] lane by lane on `f32x8`'s two halves (lo: lanes 0..4, hi: 4..8).
+#[inline]
+#[must_use]
+#[allow(clippy::cast_possible_truncation)] // the low 32 bits are the point
+pub(crate) fn join_tiny_f32x8(
+    [big_lo, big_hi]: [crate::wide::f64x4; 2],
+    [small_lo, small_hi]: [crate::wide::f64x4; 2],
+) -> crate::wide::f32x8 {
+    let (l, h) = (small_lo.to_bits().to_array(), small_hi.to_bits().to_array());
+    let n = crate::wide::u32x8::new([
+        l[0] as u32,
+        l[1] as u32,
+        l[2] as u32,
+        l[3] as u32,
+        h[0] as u32,
+        h[1] as u32,
+        h[2] as u32,
+        h[3] as u32,
+    ]);
+    crate::wide::f32x8::from_bits(crate::real::narrow(big_lo, big_hi).to_bits() + n)
+}
+
 /// 1.5 2^52: adding it to a value below 2^51 in magnitude rounds the value to an integer
 /// (ties to even) in the low significand bits, and subtracting it again leaves that integer.
 const ROUND: f64 = 6_755_399_441_055_744.0;
@@ -103,6 +166,45 @@ pub(crate) fn exp_neg_split<W: Real<Scalar = f64>>(x: W) -> (W, W) {
 #[must_use]
 pub(crate) fn round_product<W: Real<Scalar = f64>>(a: W, b: W) -> W {
     a.mul_add(b, W::splat(ROUND)) - W::splat(ROUND)
+}
+
+/// Coefficients of 2^-f on [0, 1], lowest first: the degree-6 polynomial interpolating 2^-f at
+/// the seven Chebyshev nodes of that interval (computed at 200 bits with mpmath, then rounded
+/// to f64), relative error below 2.6e-9 on [-10^-6, 1 + 10^-6]
+/// (`exp2_neg_unit_is_within_its_stated_error` below): [`EXP_NEG`]'s accuracy on an interval
+/// whose reduction is `floor` (one rounding instruction on the lanes) instead of a rounding
+/// to nearest.
+const EXP2_NEG_UNIT: [f64; 7] = [
+    0.999_999_998_620_136_3,
+    -0.693_147_045_209_682_6,
+    0.240_224_331_208_438_53,
+    -0.055_490_932_114_902_95,
+    0.009_579_859_972_768_908,
+    -0.001_275_540_135_318_515_6,
+    0.000_109_328_923_932_990_26,
+];
+
+/// 2^-f for f in [0, 1] on f64 lanes by [`EXP2_NEG_UNIT`] in Estrin's scheme (three levels
+/// of multiply-adds), within 2.6e-9 relative; the value lies in [0.5 (1 - 2.6e-9),
+/// 1 + 2.6e-9]. Every intermediate is a normal number or 0 for f = 0 or |f| >= 2^-900.
+#[inline]
+#[must_use]
+pub(crate) fn exp2_neg_unit<W: Real<Scalar = f64>>(f: W) -> W {
+    let c = |i: usize| W::splat(EXP2_NEG_UNIT[i]);
+    let f2 = f * f;
+    let p01 = c(1).mul_add(f, c(0));
+    let p23 = c(3).mul_add(f, c(2));
+    let p45 = c(5).mul_add(f, c(4));
+    let p03 = p23.mul_add(f2, p01);
+    let p46 = c(6).mul_add(f2, p45);
+    p46.mul_add(f2 * f2, p03)
+}
+
+/// 2^-k for an integer k in [-1023, 1022], from its exponent bits.
+#[inline]
+#[must_use]
+pub(crate) fn pow2_neg<W: Real<Scalar = f64>>(k: W) -> W {
+    (W::splat(BIAS) - k).pow2_bits(crate::real::sealed::Token::NEW)
 }
 
 /// [`exp_neg_split`] with k given: any integer with |x - k ln 2| <= ln(2) / 2 + 10^-6 (the
