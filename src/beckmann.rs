@@ -604,14 +604,15 @@ impl crate::real::sealed::Widened<2> for DIso {
         )
     }
 
+    /// All eight lanes as one `f64x8` (one AVX-512 register where the target has them):
+    /// half the instructions of two `f64x4` halves, the same operations lane for lane.
     #[inline]
     fn lanes8(self, x: [crate::wide::f32x8; 2]) -> crate::wide::f32x8 {
-        use crate::real::widen_half;
-        let (p0, r0) = Self::factors(x.map(|v| widen_half(v, 0)));
-        let (p1, r1) = Self::factors(x.map(|v| widen_half(v, 4)));
+        let [c, a] = x;
+        let (p, rest) = Self::factors([crate::widen::widen8(c), crate::widen::widen8(a)]);
         crate::widen::join_tiny_f32x8(
-            [crate::widen::tiny_big(p0, r0), crate::widen::tiny_big(p1, r1)],
-            [crate::widen::tiny_small(p0, r0), crate::widen::tiny_small(p1, r1)],
+            crate::widen::tiny_big(p, rest),
+            crate::widen::tiny_small(p, rest),
         )
     }
 }
@@ -620,12 +621,13 @@ impl DIso {
     /// D = 2^-f (2^-k q^2 alpha^2 / pi) as (2^-f, the rest), from c (raised to the floor in
     /// f32 by [`d`]) and the clamped alpha, widened from f32 (see [`d`]).
     #[inline]
-    fn factors<W: Real<Scalar = f64>>([c, a]: [W; 2]) -> (W, W) {
+    fn factors<W: crate::widen::F64Lanes>([c, a]: [W; 2]) -> (W, W) {
+        let one = W::splat(1.0);
         let c2 = c * c;
         // q log2(e) = (log2(e) / alpha^2) / c^2; a factor of alpha alone is computed once
         // in a loop over cosines.
-        let q_l = ((a * a).recip() * W::splat(core::f64::consts::LOG2_E)) / c2;
-        let x = (W::ONE - c2) * q_l;
+        let q_l = ((one / (a * a)) * W::splat(core::f64::consts::LOG2_E)) / c2;
+        let x = (one - c2) * q_l;
         let k = x.floor();
         let p = crate::widen::exp2_neg_unit(x - k);
         let qb = q_l * (a * W::splat(LN2_OVER_SQRT_PI));

@@ -29,6 +29,100 @@
 //! fl32(y) in both cases without a comparison, and no instruction meets a subnormal number.
 
 use crate::real::Real;
+use core::ops::{Add, Div, Mul, Sub};
+
+/// The f64 operations of a kernel's `wide` form that also run on `f64x8` (eight lanes in one
+/// AVX-512 register where the target has them, two `f64x4` otherwise): `f64` and `f64x4`
+/// through [`Real`], `f64x8` through `wide`'s own methods with [`Real`]'s meanings, so that
+/// one generic source gives the same bits on all three, lane for lane.
+pub(crate) trait F64Lanes:
+    Copy + Add<Output = Self> + Sub<Output = Self> + Mul<Output = Self> + Div<Output = Self>
+{
+    /// Every lane `v`.
+    fn splat(v: f64) -> Self;
+    /// `self * a + b`, fused where the target has FMA (as [`Real::mul_add`]).
+    fn mul_add(self, a: Self, b: Self) -> Self;
+    /// Largest integer not above `self`.
+    fn floor(self) -> Self;
+    /// As [`Real::max`]: `o` where `self < o`, else `self` (NaN in `self` propagates).
+    fn max(self, o: Self) -> Self;
+    /// As [`Real::min`]: `o` where `self > o`, else `self` (NaN in `self` propagates).
+    fn min(self, o: Self) -> Self;
+    /// 2^n from its exponent bits, for `self` = 2^52 + 1023 + n (`Real`'s sealed
+    /// `pow2_bits`).
+    fn pow2_bits(self) -> Self;
+}
+
+impl<W: Real<Scalar = f64>> F64Lanes for W {
+    #[inline]
+    fn splat(v: f64) -> Self {
+        <W as Real>::splat(v)
+    }
+    #[inline]
+    fn mul_add(self, a: Self, b: Self) -> Self {
+        Real::mul_add(self, a, b)
+    }
+    #[inline]
+    fn floor(self) -> Self {
+        Real::floor(self)
+    }
+    #[inline]
+    fn max(self, o: Self) -> Self {
+        Real::max(self, o)
+    }
+    #[inline]
+    fn min(self, o: Self) -> Self {
+        Real::min(self, o)
+    }
+    #[inline]
+    fn pow2_bits(self) -> Self {
+        crate::real::sealed::Sealed::pow2_bits(self, crate::real::sealed::Token::NEW)
+    }
+}
+
+impl F64Lanes for crate::wide::f64x8 {
+    #[inline]
+    fn splat(v: f64) -> Self {
+        crate::wide::f64x8::splat(v)
+    }
+    #[inline]
+    fn mul_add(self, a: Self, b: Self) -> Self {
+        crate::wide::f64x8::mul_add(self, a, b)
+    }
+    #[inline]
+    fn floor(self) -> Self {
+        crate::wide::f64x8::floor(self)
+    }
+    #[inline]
+    fn max(self, o: Self) -> Self {
+        // As `Real::max` on `f64x4` (`crate::real`): maxpd(o, self), NaN in either giving self.
+        #[cfg(any(target_arch = "x86", target_arch = "x86_64"))]
+        {
+            o.fast_max(self)
+        }
+        #[cfg(not(any(target_arch = "x86", target_arch = "x86_64")))]
+        {
+            use crate::wide::CmpLt;
+            self.simd_lt(o).select(o, self)
+        }
+    }
+    #[inline]
+    fn min(self, o: Self) -> Self {
+        #[cfg(any(target_arch = "x86", target_arch = "x86_64"))]
+        {
+            o.fast_min(self)
+        }
+        #[cfg(not(any(target_arch = "x86", target_arch = "x86_64")))]
+        {
+            use crate::wide::CmpGt;
+            self.simd_gt(o).select(o, self)
+        }
+    }
+    #[inline]
+    fn pow2_bits(self) -> Self {
+        crate::wide::f64x8::from_bits(self.to_bits() << 52_u32)
+    }
+}
 
 /// 2^-126, the smallest normal `f32` (also for the lanes' `split_tiny` in `crate::real`).
 pub(crate) const F32_MIN_POSITIVE: f64 = 1.175_494_350_822_287_5e-38;
@@ -67,7 +161,7 @@ const TWO_POW_149: f64 = 7.136_238_463_529_8e44;
 /// gives NaN.
 #[inline]
 #[must_use]
-pub(crate) fn tiny_big<W: Real<Scalar = f64>>(p: W, x: W) -> W {
+pub(crate) fn tiny_big<W: F64Lanes>(p: W, x: W) -> W {
     (p * x).max(W::splat(F32_MIN_POSITIVE))
 }
 
@@ -81,7 +175,7 @@ pub(crate) fn tiny_big<W: Real<Scalar = f64>>(p: W, x: W) -> W {
 /// normal f64). NaN gives the cap.
 #[inline]
 #[must_use]
-pub(crate) fn tiny_small<W: Real<Scalar = f64>>(p: W, x: W) -> W {
+pub(crate) fn tiny_small<W: F64Lanes>(p: W, x: W) -> W {
     let n = p.mul_add(x * W::splat(TWO_POW_149), W::splat(ROUND - 8_388_608.0));
     W::splat(ROUND).min(n)
 }
@@ -99,26 +193,51 @@ pub(crate) fn join_tiny_f32(big: f64, small: f64) -> f32 {
     f32::from_bits(round_f32(big).to_bits().wrapping_add(small.to_bits() as u32))
 }
 
-/// [`join_tiny_f32`] lane by lane on `f32x8`'s two halves (lo: lanes 0..4, hi: 4..8).
+/// The eight lanes of `v` widened to f64 (exactly).
+#[inline(always)]
+#[must_use]
+pub(crate) fn widen8(v: crate::wide::f32x8) -> crate::wide::f64x8 {
+    let a = v.to_array();
+    crate::wide::f64x8::new([
+        f64::from(a[0]),
+        f64::from(a[1]),
+        f64::from(a[2]),
+        f64::from(a[3]),
+        f64::from(a[4]),
+        f64::from(a[5]),
+        f64::from(a[6]),
+        f64::from(a[7]),
+    ])
+}
+
+/// [`join_tiny_f32`] lane by lane on eight lanes.
 #[inline]
 #[must_use]
-#[allow(clippy::cast_possible_truncation)] // the low 32 bits are the point
-pub(crate) fn join_tiny_f32x8(
-    [big_lo, big_hi]: [crate::wide::f64x4; 2],
-    [small_lo, small_hi]: [crate::wide::f64x4; 2],
-) -> crate::wide::f32x8 {
-    let (l, h) = (small_lo.to_bits().to_array(), small_hi.to_bits().to_array());
+#[allow(clippy::cast_possible_truncation)] // the rounding and the low 32 bits are the point
+pub(crate) fn join_tiny_f32x8(big: crate::wide::f64x8, small: crate::wide::f64x8) -> crate::wide::f32x8 {
+    let (b, s) = (big.to_array(), small.to_bits().to_array());
+    let big = crate::wide::f32x8::new([
+        b[0] as f32,
+        b[1] as f32,
+        b[2] as f32,
+        b[3] as f32,
+        b[4] as f32,
+        b[5] as f32,
+        b[6] as f32,
+        b[7] as f32,
+    ])
+    .to_bits();
     let n = crate::wide::u32x8::new([
-        l[0] as u32,
-        l[1] as u32,
-        l[2] as u32,
-        l[3] as u32,
-        h[0] as u32,
-        h[1] as u32,
-        h[2] as u32,
-        h[3] as u32,
+        s[0] as u32,
+        s[1] as u32,
+        s[2] as u32,
+        s[3] as u32,
+        s[4] as u32,
+        s[5] as u32,
+        s[6] as u32,
+        s[7] as u32,
     ]);
-    crate::wide::f32x8::from_bits(crate::real::narrow(big_lo, big_hi).to_bits() + n)
+    crate::wide::f32x8::from_bits(big + n)
 }
 
 /// 1.5 2^52: adding it to a value below 2^51 in magnitude rounds the value to an integer
@@ -189,7 +308,7 @@ const EXP2_NEG_UNIT: [f64; 7] = [
 /// 1 + 2.6e-9]. Every intermediate is a normal number or 0 for f = 0 or |f| >= 2^-900.
 #[inline]
 #[must_use]
-pub(crate) fn exp2_neg_unit<W: Real<Scalar = f64>>(f: W) -> W {
+pub(crate) fn exp2_neg_unit<W: F64Lanes>(f: W) -> W {
     let c = |i: usize| W::splat(EXP2_NEG_UNIT[i]);
     let f2 = f * f;
     let p01 = c(1).mul_add(f, c(0));
@@ -203,8 +322,8 @@ pub(crate) fn exp2_neg_unit<W: Real<Scalar = f64>>(f: W) -> W {
 /// 2^-k for an integer k in [-1023, 1022], from its exponent bits.
 #[inline]
 #[must_use]
-pub(crate) fn pow2_neg<W: Real<Scalar = f64>>(k: W) -> W {
-    (W::splat(BIAS) - k).pow2_bits(crate::real::sealed::Token::NEW)
+pub(crate) fn pow2_neg<W: F64Lanes>(k: W) -> W {
+    (W::splat(BIAS) - k).pow2_bits()
 }
 
 /// [`exp_neg_split`] with k given: any integer with |x - k ln 2| <= ln(2) / 2 + 10^-6 (the
