@@ -514,26 +514,45 @@ impl<T: Real> Microfacet<T> for Beckmann<T> {
 ///   products and the division remainder, D is exp(-E_hi) (1 - E_lo) / (pi alpha^2 c^4) with
 ///   the denominator's roundings recovered too, and the whole is rounded once (about 150
 ///   extra flops): within 1.7 ULP (f64) / 2.2 (f64x4), exp's own error included.
-/// - `f32`, `f32x8`: the same D is evaluated in f64 (`f32x8` as two `f64x4` halves, lane for
-///   lane the scalar operations) and rounded to f32 once. There c^2 and alpha^2 are exact,
-///   q = (1 / alpha^2) / c^2 and E = (1 - c^2) q carry four roundings of 2^-53 (an absolute
-///   error below 1e-13 in E), e^-E = 2^-k e^-r with k = round(E / ln 2) (formed from
-///   (1 - c^2) log2(e) and q beside E), |r| <= ln(2) / 2,
-///   e^-r by a degree-6 polynomial within 2.6e-9, and D = e^-E q^2 alpha^2 / pi with one
-///   division in all. Cosines where E would exceed 200 are raised to the one where E = 200
-///   (c^2 >= 1 / (1 + 200 alpha^2), a bound that depends on alpha alone): D there is below
-///   2e-75 for every alpha in [ALPHA_MIN, ALPHA_MAX] and rounds to 0, as the true D does,
-///   without a select on the lane's path, and a result below f32's smallest normal
-///   number is rounded from normal ones (`max(y, 2^-126)` and `min(y, 2^-126) + 2^-126`,
-///   joined in their bits), so that for normal inputs no instruction meets a subnormal number
-///   (on x86 each would cost a microcode assist; `tests/lanes/exp.rs` reads the flags that
-///   record one): within 0.7 ULP (f32, f32x8; 0.53 found), the polynomial's 0.04 included.
+/// - `f32`, `f32x8`: the same D is evaluated in f64 and rounded to f32 once; `f32x8` takes
+///   its eight lanes as one `f64x8` (one AVX-512 register where the target has them, two
+///   `f64x4` otherwise), the scalar's operations lane for lane, so that lanes equal scalars
+///   bit for bit. First, in f32, the cosine is raised to c_min = 1 / sqrt(1 + 200 alpha^2),
+///   where E = 200 (E in [182, 206] after c_min's f32 roundings, a bound of alpha alone
+///   computed once in a loop over cosines): D there is below 1e-60 for every alpha in
+///   [ALPHA_MIN, ALPHA_MAX] and rounds to 0, as the true D does at every cosine below it (D
+///   grows with c up to its peak, which lies above c_min), c <= 0 included, without a select.
+///   Then, in f64, where c^2 and alpha^2 are exact:
+///
+///   x = E log2(e) = (1 - c^2) q_l, q_l = (log2(e) / alpha^2) / c^2 (the one division; the
+///   factor of alpha alone once per alpha), k = floor(x), f = x - k in [0, 1) (exact),
+///   D = 2^-f 2^-k (q_l alpha ln(2) / sqrt(pi))^2, 2^-f by a degree-6 polynomial within
+///   2.6e-9 (interpolation at the Chebyshev nodes of [0, 1]) and 2^-k from its exponent
+///   bits.
+///
+///   Error budget, relative to D: x carries six roundings of 2^-53 (1/alpha^2, log2(e) and
+///   its rounding, the division, 1 - c^2, the product), below 2.0e-13 absolute for x <= 300,
+///   so 2^-x is within 1.4e-13; the polynomial 2.6e-9 (0.044 ULP of f32); the other factor
+///   and the product about 20 roundings of 2^-53 (2.2e-15): about 2.6e-9 in all before the
+///   rounding to f32, 0.045 ULP, so within 0.5 + 0.045 ULP of the exact D. Every product is
+///   a normal f64 (D >= 1e-99 for E <= 206).
+///
+///   The rounding to f32 never meets a subnormal number (on x86 each costs a microcode
+///   assist; `tests/lanes/exp.rs` reads the flags that record one): big = max(D, 2^-126) is
+///   converted, and small = min(2^-f (2^-k Q 2^149) + 1.5 2^52 - 2^23, 1.5 2^52), one
+///   multiply-add beside big's product, holds in its low 32 bits n - 2^23 for n the
+///   subnormal result's bit pattern, round(D 2^149) (capped at 2^23 where D is normal); the
+///   sum of the two bit patterns is fl32(D) in both ranges (`crate::widen::join_tiny_f32`),
+///   with no comparison. NaN in either input reaches D through the f64 steps and the
+///   conversion. Within 0.7 ULP (f32, f32x8; 0.47 found by the MPFR oracle and by its
+///   worst-case search `beckmann_d_f32_worst_case_search` in `oracle/tests/microfacet.rs`:
+///   fresh points, cosines within 64 ULP of 1, E near the polynomial's interval ends and at
+///   c_min, D near 2^-126 and 2^-149, alpha at ALPHA_MIN and ALPHA_MAX, and a hill-climb;
+///   scored in ULPs of the correctly rounded f32, 2^-149 below 2^-126).
 ///
 /// Measured by the MPFR oracle (module docs). Run time on `f32x8` (native build, one core of an
-/// AMD EPYC (Zen 4), 10^6 uniform cosines through [`crate::batch::run_f32`], CPU time):
-/// 1.41 ms, 2.0x [`d_fast`] and 1.98x Mitsuba 3's `eval` on the same batch in one run (2.3x
-/// to 2.5x in quieter ones; `bench/mitsuba/compare.py --n 1000000`, its README's table; 7.9x
-/// before the f64 evaluation), of which the subnormal-safe rounding is about a fifth.
+/// AMD EPYC (Zen 4), 10^6 uniform cosines through [`crate::batch::run_f32`], CPU time, one
+/// interleaved run of `bench/mitsuba/compare.py --n 1000000`): RUNTIME_TBD
 ///
 /// [`alpha_from_perceptual`]: crate::microfacet::alpha_from_perceptual
 #[inline]
@@ -565,7 +584,10 @@ pub fn d<T: Real>(n_dot_h: T, alpha: T) -> T {
 const E_ZERO_F32: f64 = 200.0;
 
 /// The cosine below which `d` on f32 types raises n_dot_h, where E = E_ZERO_F32:
-/// 1 / sqrt(1 + 200 alpha^2), in f32 (see [`d`]).
+/// c_min = 1 / sqrt(1 + 200 alpha^2), in f32 (see [`d`]). Its four f32 roundings move E at
+/// c_min into [182, 206] (a sweep of 2 * 10^6 log-spaced alphas over [ALPHA_MIN,
+/// ALPHA_MAX], fused and unfused multiply-add alike), where D < 1e-66 still rounds to 0
+/// (the bound above with E >= 182).
 #[inline]
 fn c_floor_f32<T: Real>(a: T) -> T {
     (a * a).mul_add(T::splat(E_ZERO_F32), T::ONE).sqrt().recip()
