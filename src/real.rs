@@ -1051,9 +1051,9 @@ pub(crate) mod sealed {
         /// target. 0 gives a finite value (about 2^63 / 2^511); subnormal, infinite and NaN
         /// input give an unspecified value (no panic).
         fn rsqrt_bits(self, token: Token) -> Self;
-        /// The kernel `k` on `x`: on `f32` and `f32x8` its `wide` form in f64 (`f64`, resp.
-        /// two `f64x4` halves), rounded to f32 once (`crate::widen`); on `f64` and `f64x4`
-        /// its `native` form.
+        /// The kernel `k` on `x`: on `f32` and `f32x8` its f64 evaluation rounded to f32 once
+        /// (`Widened::single`, `Widened::lanes8`; by default its `wide` form on `f64`, resp.
+        /// two `f64x4` halves; `crate::widen`); on `f64` and `f64x4` its `native` form.
         fn via_f64<K: Widened<N>, const N: usize>(x: [Self; N], k: K, token: Token) -> Self;
     }
 

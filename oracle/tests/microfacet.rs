@@ -217,6 +217,7 @@ fn beckmann_d_f32_worst_case_search() {
     // Hill-climb: from each of the 200 worst, steps of 1 to 64 ULP in c and alpha while the
     // error grows.
     let mut worst = scored[0];
+    let mut climbed = Vec::new();
     for &(mut best, (mut c, mut a)) in scored.iter().take(200) {
         for _ in 0..400 {
             let dc = (rng.uniform() * 129.0) as i32 - 64;
@@ -235,6 +236,24 @@ fn beckmann_d_f32_worst_case_search() {
         }
         if best > worst.0 {
             worst = (best, (c, a));
+        }
+        climbed.push((best, (c, a)));
+    }
+    // The three worst in distinct regions (c or alpha apart by more than 1e-3 relative), in
+    // `oracle/hardest.txt`'s form.
+    climbed.sort_by(|x, y| y.0.total_cmp(&x.0));
+    let mut kept: Vec<(f64, (f32, f32))> = Vec::new();
+    for &(e, (c, a)) in &climbed {
+        let near = |&(_, (c2, a2)): &(f64, (f32, f32))| {
+            ((c - c2) / c).abs() < 1e-3 && ((a - a2) / a).abs() < 1e-3
+        };
+        if kept.len() < 3 && !kept.iter().any(near) {
+            kept.push((e, (c, a)));
+            eprintln!(
+                "{e:.4} ULP:\tbeckmann::d\tf32\t{:e} {:e}",
+                f64::from(c),
+                f64::from(a)
+            );
         }
     }
     let (e, (c, a)) = worst;
