@@ -35,7 +35,7 @@
 //!
 //! | function | f32 | f64 | f32x8 | f64x4 |
 //! |---|---|---|---|---|
-//! | `d` | 0.7 (0.53) | 1.7 (1.52) | 0.7 (0.53) | 2.2 (1.96) |
+//! | `d` | 0.7 (0.54) | 1.7 (1.52) | 0.7 (0.54) | 2.2 (1.96) |
 //! | `Beckmann::d` | 1.7 (1.45) | 1.8 (1.57) | 1.8 (1.63) | 2.4 (2.18) |
 //! | `lambda` | 2.5 (2.27) | 2.0 (1.77) | 2.5 (2.27) | 2.3 (2.11) |
 //! | `g1` | 3.3 (3.14) | 2.4 (2.22) | 3.3 (3.14) | 2.4 (2.22) |
@@ -514,37 +514,72 @@ impl<T: Real> Microfacet<T> for Beckmann<T> {
 ///   products and the division remainder, D is exp(-E_hi) (1 - E_lo) / (pi alpha^2 c^4) with
 ///   the denominator's roundings recovered too, and the whole is rounded once (about 150
 ///   extra flops): within 1.7 ULP (f64) / 2.2 (f64x4), exp's own error included.
-/// - `f32`, `f32x8`: the same D is evaluated in f64 (`f32x8` as two `f64x4` halves, lane for
-///   lane the scalar operations) and rounded to f32 once. There c^2 and alpha^2 are exact,
-///   q = (1 / alpha^2) / c^2 and E = (1 - c^2) q carry four roundings of 2^-53 (an absolute
-///   error below 1e-13 in E), e^-E = 2^-k e^-r with k = round(E / ln 2) (formed from
-///   (1 - c^2) log2(e) and q beside E), |r| <= ln(2) / 2,
-///   e^-r by a degree-6 polynomial within 2.6e-9, and D = e^-E q^2 alpha^2 / pi with one
-///   division in all. Cosines where E would exceed 200 are raised to the one where E = 200
-///   (c^2 >= 1 / (1 + 200 alpha^2), a bound that depends on alpha alone): D there is below
-///   2e-75 for every alpha in [ALPHA_MIN, ALPHA_MAX] and rounds to 0, as the true D does,
-///   without a select on the lane's path, and a result below f32's smallest normal
-///   number is rounded from normal ones (`max(y, 2^-126)` and `min(y, 2^-126) + 2^-126`,
-///   joined in their bits), so that for normal inputs no instruction meets a subnormal number
-///   (on x86 each would cost a microcode assist; `tests/lanes/exp.rs` reads the flags that
-///   record one): within 0.7 ULP (f32, f32x8; 0.53 found), the polynomial's 0.04 included.
+/// - `f32`, `f32x8`: the same D is evaluated in f64 and rounded to f32 once; `f32x8` takes
+///   its eight lanes as one `f64x8` (one AVX-512 register where the target has them, two
+///   `f64x4` otherwise), the scalar's operations lane for lane, so that lanes equal scalars
+///   bit for bit. First, in f32, the cosine is raised to c_min = 1 / sqrt(1 + 200 alpha^2),
+///   where E = 200 (E in [182, 206] after c_min's f32 roundings, a bound of alpha alone
+///   computed once in a loop over cosines): D there is below 1e-60 for every alpha in
+///   [ALPHA_MIN, ALPHA_MAX] and rounds to 0, as the true D does at every cosine below it (D
+///   grows with c up to its peak, which lies above c_min), c <= 0 included, without a select.
+///   Then, in f64, where c^2 and alpha^2 are exact:
+///
+///   x = E log2(e) = (1 - c^2) q_l, q_l = (log2(e) / alpha^2) / c^2 (the one division; the
+///   factor of alpha alone once per alpha), k = floor(x), f = x - k in [0, 1) (exact),
+///   D = 2^-f 2^-k Q, Q = (q_l alpha ln(2) / sqrt(pi))^2, 2^-f by a degree-6 polynomial within
+///   2.6e-9 (interpolation at the Chebyshev nodes of [0, 1]) and 2^-k from its exponent
+///   bits.
+///
+///   Error budget, relative to D: x carries six roundings of 2^-53 (1/alpha^2, log2(e) and
+///   its rounding, the division, 1 - c^2, the product), below 2.0e-13 absolute for x <= 300,
+///   so 2^-x is within 1.4e-13; the polynomial 2.6e-9 (0.044 ULP of f32); the other factor
+///   and the product about 20 roundings of 2^-53 (2.2e-15): about 2.6e-9 in all before the
+///   rounding to f32, 0.045 ULP, so within 0.5 + 0.045 ULP of the exact D. Every product is
+///   a normal f64 (D >= 1e-99 for E <= 206).
+///
+///   The rounding to f32 never meets a subnormal number (on x86 each costs a microcode
+///   assist; `tests/lanes/exp.rs` reads the flags that record one): big = max(D, 2^-126) is
+///   converted, and small = min(2^-f (2^-k Q 2^149) + 1.5 2^52 - 2^23, 1.5 2^52), one
+///   multiply-add beside big's product, holds in its low 32 bits n - 2^23 for n the
+///   subnormal result's bit pattern, round(D 2^149) (capped at 2^23 where D is normal); the
+///   sum of the two bit patterns is fl32(D) in both ranges (`crate::widen::join_tiny_f32`),
+///   with no comparison. NaN in either input reaches D through the f64 steps and the
+///   conversion. Within 0.7 ULP (f32, f32x8; 0.54 found by the MPFR oracle's
+///   worst-case search `beckmann_d_f32_worst_case_search` in `oracle/tests/microfacet.rs`:
+///   fresh points, cosines within 64 ULP of 1, E near the polynomial's interval ends and at
+///   c_min, D near 2^-126 and 2^-149, alpha at ALPHA_MIN and ALPHA_MAX, and a hill-climb;
+///   scored in ULPs of the correctly rounded f32, 2^-149 below 2^-126; `cargo test -p
+///   brdf-oracle --release --test microfacet beckmann_d_f32_worst_case -- --nocapture`, 0.54
+///   in the default, FMA and `-C target-cpu=native` builds over 2 * 10^6 points each).
 ///
 /// Measured by the MPFR oracle (module docs). Run time on `f32x8` (native build, one core of an
-/// AMD EPYC (Zen 4), 10^6 uniform cosines through [`crate::batch::run_f32`], CPU time):
-/// 1.41 ms, 2.0x [`d_fast`] and 1.98x Mitsuba 3's `eval` on the same batch in one run (2.3x
-/// to 2.5x in quieter ones; `bench/mitsuba/compare.py --n 1000000`, its README's table; 7.9x
-/// before the f64 evaluation), of which the subnormal-safe rounding is about a fifth.
+/// AMD EPYC (Zen 4), 10^6 uniform cosines through [`crate::batch::run_f32`], CPU time, one
+/// interleaved run of `bench/mitsuba/compare.py --n 1000000` under a load average of about 5):
+/// 0.93 ms, 1.47x Mitsuba 3's `eval` on the same batch (0.63 ms; 1.50x in another run) and
+/// 1.5x [`d_fast`]; 2.1x to 2.3x Mitsuba before this form (two `f64x4` halves, e^-r after a
+/// rounding to nearest, a second conversion for the subnormal results).
 ///
 /// [`alpha_from_perceptual`]: crate::microfacet::alpha_from_perceptual
 #[inline]
 #[must_use]
 pub fn d<T: Real>(n_dot_h: T, alpha: T) -> T {
     let a = clamp_alpha(alpha);
-    // c <= 0 gives D = 0 through E = +inf (`DIso`); NaN is restored last, since the f32
-    // rounding does not keep it.
-    let c = n_dot_h.max(T::ZERO).min(T::ONE);
+    // NaN is restored last, since the f32 rounding does not keep it. On f64 types c <= 0
+    // gives D = 0 through E = +inf (`DIso::native`); on f32 types the cosine is raised to
+    // the floor of `DIso::wide` here, in f32 (c <= 0 included).
+    let lo = if crate::dw::single::<T>() {
+        c_floor_f32(a)
+    } else {
+        T::ZERO
+    };
+    let c = n_dot_h.max(lo).min(T::ONE);
     let value = T::via_f64([c, a], DIso, crate::real::sealed::Token::NEW);
-    nan_where(a.is_nan() | n_dot_h.is_nan(), value)
+    if crate::dw::single::<T>() {
+        // NaN reaches D through the f64 evaluation and its rounding (`DIso::factors`).
+        value
+    } else {
+        nan_where(a.is_nan() | n_dot_h.is_nan(), value)
+    }
 }
 
 /// Above this exponent E the isotropic D is below 2^-150 for every alpha in [ALPHA_MIN,
@@ -552,6 +587,16 @@ pub fn d<T: Real>(n_dot_h: T, alpha: T) -> T {
 /// D = e^-E E^2 alpha^2 / (pi s2^2) <= 4e8 e^-E E^2 / pi < 1e-74 where c^2 <= 1/2 (s2 >= 1/2),
 /// and D = e^-E / (pi alpha^2 c^4) <= 4 e^-E / (pi 1e-8) < 1e-79 where c^2 > 1/2.
 const E_ZERO_F32: f64 = 200.0;
+
+/// The cosine below which `d` on f32 types raises n_dot_h, where E = E_ZERO_F32:
+/// c_min = 1 / sqrt(1 + 200 alpha^2), in f32 (see [`d`]). Its four f32 roundings move E at
+/// c_min into [182, 206] (a sweep of 2 * 10^6 log-spaced alphas over [ALPHA_MIN,
+/// ALPHA_MAX], fused and unfused multiply-add alike), where D < 1e-66 still rounds to 0
+/// (the bound above with E >= 182).
+#[inline]
+fn c_floor_f32<T: Real>(a: T) -> T {
+    (a * a).mul_add(T::splat(E_ZERO_F32), T::ONE).sqrt().recip()
+}
 
 /// The isotropic D of `d` for c = min(n_dot_h, 1) and the clamped alpha (c <= 0 is replaced
 /// by the caller): double words in f64 and f64x4, one f64 evaluation rounded once in f32 and
@@ -569,33 +614,56 @@ impl crate::real::sealed::Widened<2> for DIso {
         crate::domain::above(c, exp_neg_over(e, den))
     }
 
+    /// D before its rounding to f32 (`single` and `lanes8` below round D's two factors
+    /// with `crate::widen`'s subnormal-safe rounding instead).
     #[inline]
-    fn wide<W: Real<Scalar = f64>>(self, [c, a]: [W; 2]) -> W {
-        // c^2 and alpha^2 are exact (48 significant bits). Cosines whose E would exceed 200
-        // (c^2 (1 + 200 alpha^2) < 1) are raised to the cosine where E = 200: D there is below
-        // 2e-75 for every alpha in [ALPHA_MIN, ALPHA_MAX] (E_ZERO_F32), so it rounds to 0 in
-        // f32 as the true D does, E stays <= 200 (up to a few units of 2^-53) without a
-        // select, and c = 0 needs no case of its own. The floor depends on alpha alone, so in
-        // a loop over cosines with one alpha it is computed once.
-        let a2 = a * a;
-        let c2 = (c * c).max(a2.mul_add(W::splat(E_ZERO_F32), W::ONE).recip());
-        // 1 - c^2, 1 / alpha^2 and q = (1 / alpha^2) / c^2 (the division takes c^2 directly,
-        // the shortest path to it) round once each, so E = (1 - c^2) q is within 4 units of
-        // 2^-53 of itself, an absolute error below 1e-13 for E <= 200 (against the
-        // polynomial's 2.6e-9 relative). No intermediate is subnormal.
-        let s2 = W::ONE - c2;
-        let q = a2.recip() / c2;
-        let e = s2 * q;
-        // k = round(E log2(e)) from (1 - c^2) log2(e) and q, beside E rather than after it.
-        let s2_log2e = s2 * W::splat(core::f64::consts::LOG2_E);
-        let k = crate::widen::round_product(s2_log2e, q);
-        let (p, two_k) = crate::widen::exp_neg_split_k(e, k);
-        // D = e^-E / (pi c^4 alpha^2) = p 2^-k q^2 alpha^2 / pi, the factors other than p
-        // multiplied while p is evaluated; for E <= 200 and q <= 1e8 / c^2 every factor and
-        // product lies between 1e-88 and 1e204.
-        p * (two_k * ((q * q) * (a2 * W::splat(core::f64::consts::FRAC_1_PI))))
+    fn wide<W: Real<Scalar = f64>>(self, x: [W; 2]) -> W {
+        let (p, rest) = Self::factors(x);
+        p * rest
+    }
+
+    #[inline]
+    fn single(self, x: [f32; 2]) -> f32 {
+        let (p, rest) = Self::factors(x.map(f64::from));
+        crate::widen::join_tiny_f32(
+            crate::widen::tiny_big(p, rest),
+            crate::widen::tiny_small(p, rest),
+        )
+    }
+
+    /// All eight lanes as one `f64x8` (one AVX-512 register where the target has them):
+    /// half the instructions of two `f64x4` halves, the same operations lane for lane.
+    #[inline]
+    fn lanes8(self, x: [crate::wide::f32x8; 2]) -> crate::wide::f32x8 {
+        let [c, a] = x;
+        let (p, rest) = Self::factors([crate::widen::widen8(c), crate::widen::widen8(a)]);
+        crate::widen::join_tiny_f32x8(
+            crate::widen::tiny_big(p, rest),
+            crate::widen::tiny_small(p, rest),
+        )
     }
 }
+
+impl DIso {
+    /// D = 2^-f (2^-k q^2 alpha^2 / pi) as (2^-f, the rest), from c (raised to the floor in
+    /// f32 by [`d`]) and the clamped alpha, widened from f32 (see [`d`]).
+    #[inline]
+    fn factors<W: crate::widen::F64Lanes>([c, a]: [W; 2]) -> (W, W) {
+        let one = W::splat(1.0);
+        let c2 = c * c;
+        // q log2(e) = (log2(e) / alpha^2) / c^2; a factor of alpha alone is computed once
+        // in a loop over cosines.
+        let q_l = ((one / (a * a)) * W::splat(core::f64::consts::LOG2_E)) / c2;
+        let x = (one - c2) * q_l;
+        let k = x.floor();
+        let p = crate::widen::exp2_neg_unit(x - k);
+        let qb = q_l * (a * W::splat(LN2_OVER_SQRT_PI));
+        (p, crate::widen::pow2_neg(k) * (qb * qb))
+    }
+}
+
+/// ln(2) / sqrt(pi): q log2(e) times alpha times this is q alpha / sqrt(pi).
+const LN2_OVER_SQRT_PI: f64 = 0.391_066_419_137_416_97;
 
 /// Isotropic Beckmann NDF in working precision, the fast companion of [`d`]: the same
 /// D = exp(-tan^2 / alpha^2) / (pi alpha^2 c^4) (Walter et al. 2007 eq. 25) with one division

@@ -1051,9 +1051,9 @@ pub(crate) mod sealed {
         /// target. 0 gives a finite value (about 2^63 / 2^511); subnormal, infinite and NaN
         /// input give an unspecified value (no panic).
         fn rsqrt_bits(self, token: Token) -> Self;
-        /// The kernel `k` on `x`: on `f32` and `f32x8` its `wide` form in f64 (`f64`, resp.
-        /// two `f64x4` halves), rounded to f32 once (`crate::widen`); on `f64` and `f64x4`
-        /// its `native` form.
+        /// The kernel `k` on `x`: on `f32` and `f32x8` its f64 evaluation rounded to f32 once
+        /// (`Widened::single`, `Widened::lanes8`; by default its `wide` form on `f64`, resp.
+        /// two `f64x4` halves; `crate::widen`); on `f64` and `f64x4` its `native` form.
         fn via_f64<K: Widened<N>, const N: usize>(x: [Self; N], k: K, token: Token) -> Self;
     }
 
@@ -1067,6 +1067,25 @@ pub(crate) mod sealed {
         /// The kernel in f64 on inputs that are f32 values widened exactly, to within a
         /// small relative error of the exact result (taken by `f32` and `f32x8`).
         fn wide<W: super::Real<Scalar = f64>>(self, x: [W; N]) -> W;
+        /// The kernel on `f32` (taken by `f32`): by default `wide::<f64>`, rounded to f32
+        /// once (`crate::widen::round_tiny_f32` where `TINY`). A kernel that rounds its
+        /// own way overrides this and [`lanes8`](Widened::lanes8) together, with the same
+        /// operations lane for lane.
+        #[inline]
+        fn single(self, x: [f32; N]) -> f32 {
+            let y = self.wide::<f64>(x.map(f64::from));
+            if Self::TINY {
+                crate::widen::round_tiny_f32(y)
+            } else {
+                crate::widen::round_f32(y)
+            }
+        }
+        /// The kernel on `f32x8` (taken by `f32x8`): by default `wide::<f64x4>` on each
+        /// half of the lanes, rounded as [`single`](Widened::single) rounds, lane for lane.
+        #[inline]
+        fn lanes8(self, x: [super::f32x8; N]) -> super::f32x8 {
+            super::via_halves(self, x)
+        }
     }
     impl Sealed for f32 {
         #[inline]
@@ -1083,12 +1102,7 @@ pub(crate) mod sealed {
         }
         #[inline]
         fn via_f64<K: Widened<N>, const N: usize>(x: [Self; N], k: K, _: Token) -> Self {
-            let y = k.wide::<f64>(x.map(f64::from));
-            if K::TINY {
-                crate::widen::round_tiny_f32(y)
-            } else {
-                crate::widen::round_f32(y)
-            }
+            k.single(x)
         }
     }
     impl Sealed for f64 {
@@ -1124,18 +1138,7 @@ pub(crate) mod sealed {
         }
         #[inline]
         fn via_f64<K: Widened<N>, const N: usize>(x: [Self; N], k: K, _: Token) -> Self {
-            let lo = k.wide(x.map(|v| super::widen_half(v, 0)));
-            let hi = k.wide(x.map(|v| super::widen_half(v, 4)));
-            if K::TINY {
-                let ((big_lo, small_lo), (big_hi, small_hi)) =
-                    (super::split_tiny(lo), super::split_tiny(hi));
-                let big = super::narrow(big_lo, big_hi).to_bits();
-                let small = super::narrow(small_lo, small_hi).to_bits();
-                // `crate::widen::round_tiny_f32`'s join, lane by lane.
-                Self::from_bits((big + small) - wide::u32x8::splat(0x0100_0000))
-            } else {
-                super::narrow(lo, hi)
-            }
+            k.lanes8(x)
         }
     }
     impl Sealed for super::f64x4 {
@@ -1209,9 +1212,26 @@ fn exp2_neg_prod_f64(b: f64, x: f64, s: f64) -> f64 {
     r * (s - s * (core::f64::consts::LN_2 * e))
 }
 
+/// `Widened::lanes8`'s default: `wide` on each half of the lanes, rounded to f32 once
+/// (with `split_tiny` where `TINY`).
+#[inline(always)]
+fn via_halves<K: sealed::Widened<N>, const N: usize>(k: K, x: [f32x8; N]) -> f32x8 {
+    let lo = k.wide(x.map(|v| widen_half(v, 0)));
+    let hi = k.wide(x.map(|v| widen_half(v, 4)));
+    if K::TINY {
+        let ((big_lo, small_lo), (big_hi, small_hi)) = (split_tiny(lo), split_tiny(hi));
+        let big = narrow(big_lo, big_hi).to_bits();
+        let small = narrow(small_lo, small_hi).to_bits();
+        // `crate::widen::round_tiny_f32`'s join, lane by lane.
+        f32x8::from_bits((big + small) - wide::u32x8::splat(0x0100_0000))
+    } else {
+        narrow(lo, hi)
+    }
+}
+
 /// Lanes `at..at + 4` of `v` widened to f64 (exactly).
 #[inline(always)]
-fn widen_half(v: f32x8, at: usize) -> f64x4 {
+pub(crate) fn widen_half(v: f32x8, at: usize) -> f64x4 {
     let a = v.to_array();
     f64x4::new([
         f64::from(a[at]),
@@ -1234,7 +1254,7 @@ fn split_tiny(y: f64x4) -> (f64x4, f64x4) {
 /// The eight lanes of `lo` and `hi` rounded to f32 (to nearest, ties to even).
 #[inline(always)]
 #[allow(clippy::cast_possible_truncation)] // the rounding is the point
-fn narrow(lo: f64x4, hi: f64x4) -> f32x8 {
+pub(crate) fn narrow(lo: f64x4, hi: f64x4) -> f32x8 {
     let (l, h) = (lo.to_array(), hi.to_array());
     f32x8::new([
         l[0] as f32,

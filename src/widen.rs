@@ -16,7 +16,12 @@
 //! `f64x4` themselves. [`Real`]'s sealed hook `via_f64` picks one per lane type: `f32` runs
 //! `wide::<f64>`, `f32x8` runs `wide::<f64x4>` on each half of its lanes (the same operations
 //! lane for lane, so the lanes equal the scalar results bit for bit), `f64` and `f64x4` run
-//! `native`.
+//! `native`. A kernel may replace the `f32` and `f32x8` steps (`Widened::single` and
+//! `lanes8`) by its own, as long as they stay the same operations lane for lane: the
+//! isotropic `beckmann::d` writes its f64 form once over [`F64Lanes`] and runs `f32x8`'s
+//! eight lanes as one `f64x8` (one AVX-512 register where the target has them: half the
+//! instructions of two `f64x4` halves), with the rounding of [`tiny_big`], [`tiny_small`] and
+//! [`join_tiny_f32`].
 //!
 //! Rounding into the subnormal range: on x86, converting an `f64` to an `f32` subnormal costs
 //! a microcode assist on many cores, as does any instruction with a subnormal operand or
@@ -27,8 +32,109 @@
 //! pattern (0x0080_0000) from the rounded bits gives y's subnormal `f32`. Adding the two bit
 //! patterns and subtracting those of 2^-126 and 2^-125 (the parts where y is normal) gives
 //! fl32(y) in both cases without a comparison, and no instruction meets a subnormal number.
+//! A kernel whose result ends in a product y = p x (such as 2^-f times the rest) can do
+//! with one conversion: [`tiny_small`] rounds y to f32's subnormal spacing
+//! in the multiply-add p (x 2^149) + 1.5 2^52, whose low bits then hold the subnormal
+//! result's bit pattern, beside the product itself (on a Zen 4 core the two conversions and
+//! the additions before them took about a quarter of `beckmann::d`'s time on `f32x8`: 1.33
+//! ms per 10^6 cosines against 0.96 ms with a plain conversion, `benches/throughput.rs`'s
+//! timing mode).
 
 use crate::real::Real;
+use core::ops::{Add, Div, Mul, Sub};
+
+/// The f64 operations of a kernel's `wide` form that also run on `f64x8` (eight lanes in one
+/// AVX-512 register where the target has them, two `f64x4` otherwise): `f64` and `f64x4`
+/// through [`Real`], `f64x8` through `wide`'s own methods with [`Real`]'s meanings, so that
+/// one generic source gives the same bits on all three, lane for lane.
+pub(crate) trait F64Lanes:
+    Copy + Add<Output = Self> + Sub<Output = Self> + Mul<Output = Self> + Div<Output = Self>
+{
+    /// Every lane `v`.
+    fn splat(v: f64) -> Self;
+    /// `self * a + b`, fused where the target has FMA (as [`Real::mul_add`]).
+    fn mul_add(self, a: Self, b: Self) -> Self;
+    /// Largest integer not above `self`.
+    fn floor(self) -> Self;
+    /// As [`Real::max`]: `o` where `self < o`, else `self` (NaN in `self` propagates).
+    fn max(self, o: Self) -> Self;
+    /// As [`Real::min`]: `o` where `self > o`, else `self` (NaN in `self` propagates).
+    fn min(self, o: Self) -> Self;
+    /// 2^n from its exponent bits, for `self` = 2^52 + 1023 + n (`Real`'s sealed
+    /// `pow2_bits`).
+    fn pow2_bits(self) -> Self;
+}
+
+impl<W: Real<Scalar = f64>> F64Lanes for W {
+    #[inline]
+    fn splat(v: f64) -> Self {
+        <W as Real>::splat(v)
+    }
+    #[inline]
+    fn mul_add(self, a: Self, b: Self) -> Self {
+        Real::mul_add(self, a, b)
+    }
+    #[inline]
+    fn floor(self) -> Self {
+        Real::floor(self)
+    }
+    #[inline]
+    fn max(self, o: Self) -> Self {
+        Real::max(self, o)
+    }
+    #[inline]
+    fn min(self, o: Self) -> Self {
+        Real::min(self, o)
+    }
+    #[inline]
+    fn pow2_bits(self) -> Self {
+        crate::real::sealed::Sealed::pow2_bits(self, crate::real::sealed::Token::NEW)
+    }
+}
+
+impl F64Lanes for crate::wide::f64x8 {
+    #[inline]
+    fn splat(v: f64) -> Self {
+        crate::wide::f64x8::splat(v)
+    }
+    #[inline]
+    fn mul_add(self, a: Self, b: Self) -> Self {
+        crate::wide::f64x8::mul_add(self, a, b)
+    }
+    #[inline]
+    fn floor(self) -> Self {
+        crate::wide::f64x8::floor(self)
+    }
+    #[inline]
+    fn max(self, o: Self) -> Self {
+        // As `Real::max` on `f64x4` (`crate::real`): maxpd(o, self), NaN in either giving self.
+        #[cfg(any(target_arch = "x86", target_arch = "x86_64"))]
+        {
+            o.fast_max(self)
+        }
+        #[cfg(not(any(target_arch = "x86", target_arch = "x86_64")))]
+        {
+            use crate::wide::CmpLt;
+            self.simd_lt(o).select(o, self)
+        }
+    }
+    #[inline]
+    fn min(self, o: Self) -> Self {
+        #[cfg(any(target_arch = "x86", target_arch = "x86_64"))]
+        {
+            o.fast_min(self)
+        }
+        #[cfg(not(any(target_arch = "x86", target_arch = "x86_64")))]
+        {
+            use crate::wide::CmpGt;
+            self.simd_gt(o).select(o, self)
+        }
+    }
+    #[inline]
+    fn pow2_bits(self) -> Self {
+        crate::wide::f64x8::from_bits(self.to_bits() << 52_u32)
+    }
+}
 
 /// 2^-126, the smallest normal `f32` (also for the lanes' `split_tiny` in `crate::real`).
 pub(crate) const F32_MIN_POSITIVE: f64 = 1.175_494_350_822_287_5e-38;
@@ -56,6 +162,101 @@ pub(crate) fn round_tiny_f32(y: f64) -> f32 {
     let big = round_f32(y.max(m)).to_bits();
     let small = round_f32(y.min(m) + m).to_bits();
     f32::from_bits(big.wrapping_add(small).wrapping_sub(0x0100_0000))
+}
+
+/// 2^149: scales f32's subnormal spacing 2^-149 to 1.
+const TWO_POW_149: f64 = 7.136_238_463_529_8e44;
+
+/// big = max(p x, 2^-126) of the rounding of y = p x by [`tiny_small`] and [`join_tiny_f32`]
+/// (p, x >= 0, p x a normal f64 or 0): a normal number,
+/// fl32(y) once converted where y >= 2^-126, 2^-126 (bits 0x0080_0000) elsewhere. NaN in p
+/// gives NaN.
+#[inline]
+#[must_use]
+pub(crate) fn tiny_big<W: F64Lanes>(p: W, x: W) -> W {
+    (p * x).max(W::splat(F32_MIN_POSITIVE))
+}
+
+/// small = min(p (x 2^149) + 1.5 2^52 - 2^23, 1.5 2^52), one multiply-add and a min, for
+/// [`join_tiny_f32`]: its low 32 bits are n - 2^23 for n = min(round(y 2^149), 2^23), in two's
+/// complement. round(y 2^149) is y rounded to f32's subnormal spacing 2^-149 in units of it,
+/// to nearest, ties to even, from the exact product where the multiply-add is fused (from
+/// fl64(p x) otherwise): the bit pattern of fl32(y) wherever y < 2^-126 (2^-126's own,
+/// 0x0080_0000, included), and at least 2^23 elsewhere, where the min caps it (the sum is
+/// monotonic in y, and its low 32 bits wrap only beyond the cap). x 2^149 is exact (x is a
+/// normal f64). NaN gives the cap.
+#[inline]
+#[must_use]
+pub(crate) fn tiny_small<W: F64Lanes>(p: W, x: W) -> W {
+    let n = p.mul_add(x * W::splat(TWO_POW_149), W::splat(ROUND - 8_388_608.0));
+    W::splat(ROUND).min(n)
+}
+
+/// fl32(y) from [`tiny_big`] and [`tiny_small`] without a subnormal operand or result in any
+/// instruction: fl32(big)'s bits plus the low 32 bits of small, n - 2^23. Where y >= 2^-126,
+/// fl32(big) = fl32(y) and n - 2^23 = 0; where y < 2^-126, fl32(big) = 2^-126, whose bits
+/// are 2^23, and the sum is n, fl32(y)'s bits. No comparison of y; after the product p x
+/// the rounding adds a max, a conversion and one integer addition to the kernel's path (the
+/// multiply-add and min of small run beside them). NaN in big gives NaN.
+#[inline]
+#[must_use]
+#[allow(clippy::cast_possible_truncation)] // the low 32 bits are the point
+pub(crate) fn join_tiny_f32(big: f64, small: f64) -> f32 {
+    f32::from_bits(
+        round_f32(big)
+            .to_bits()
+            .wrapping_add(small.to_bits() as u32),
+    )
+}
+
+/// The eight lanes of `v` widened to f64 (exactly).
+#[inline(always)]
+#[must_use]
+pub(crate) fn widen8(v: crate::wide::f32x8) -> crate::wide::f64x8 {
+    let a = v.to_array();
+    crate::wide::f64x8::new([
+        f64::from(a[0]),
+        f64::from(a[1]),
+        f64::from(a[2]),
+        f64::from(a[3]),
+        f64::from(a[4]),
+        f64::from(a[5]),
+        f64::from(a[6]),
+        f64::from(a[7]),
+    ])
+}
+
+/// [`join_tiny_f32`] lane by lane on eight lanes.
+#[inline]
+#[must_use]
+#[allow(clippy::cast_possible_truncation)] // the rounding and the low 32 bits are the point
+pub(crate) fn join_tiny_f32x8(
+    big: crate::wide::f64x8,
+    small: crate::wide::f64x8,
+) -> crate::wide::f32x8 {
+    let (b, s) = (big.to_array(), small.to_bits().to_array());
+    let big = crate::wide::f32x8::new([
+        b[0] as f32,
+        b[1] as f32,
+        b[2] as f32,
+        b[3] as f32,
+        b[4] as f32,
+        b[5] as f32,
+        b[6] as f32,
+        b[7] as f32,
+    ])
+    .to_bits();
+    let n = crate::wide::u32x8::new([
+        s[0] as u32,
+        s[1] as u32,
+        s[2] as u32,
+        s[3] as u32,
+        s[4] as u32,
+        s[5] as u32,
+        s[6] as u32,
+        s[7] as u32,
+    ]);
+    crate::wide::f32x8::from_bits(big + n)
 }
 
 /// 1.5 2^52: adding it to a value below 2^51 in magnitude rounds the value to an integer
@@ -103,6 +304,45 @@ pub(crate) fn exp_neg_split<W: Real<Scalar = f64>>(x: W) -> (W, W) {
 #[must_use]
 pub(crate) fn round_product<W: Real<Scalar = f64>>(a: W, b: W) -> W {
     a.mul_add(b, W::splat(ROUND)) - W::splat(ROUND)
+}
+
+/// Coefficients of 2^-f on [0, 1], lowest first: the degree-6 polynomial interpolating 2^-f at
+/// the seven Chebyshev nodes of that interval (computed at 200 bits with mpmath, then rounded
+/// to f64), relative error below 2.6e-9 on [-10^-6, 1 + 10^-6]
+/// (`exp2_neg_unit_is_within_its_stated_error` below): [`EXP_NEG`]'s accuracy on an interval
+/// whose reduction is `floor` (one rounding instruction on the lanes) instead of a rounding
+/// to nearest.
+const EXP2_NEG_UNIT: [f64; 7] = [
+    0.999_999_998_620_136_3,
+    -0.693_147_045_209_682_6,
+    0.240_224_331_208_438_53,
+    -0.055_490_932_114_902_95,
+    0.009_579_859_972_768_908,
+    -0.001_275_540_135_318_515_6,
+    0.000_109_328_923_932_990_26,
+];
+
+/// 2^-f for f in [0, 1] on f64 lanes by [`EXP2_NEG_UNIT`] in Estrin's scheme (three levels
+/// of multiply-adds), within 2.6e-9 relative; the value lies in [0.5 (1 - 2.6e-9),
+/// 1 + 2.6e-9]. Every intermediate is a normal number or 0 for f = 0 or |f| >= 2^-900.
+#[inline]
+#[must_use]
+pub(crate) fn exp2_neg_unit<W: F64Lanes>(f: W) -> W {
+    let c = |i: usize| W::splat(EXP2_NEG_UNIT[i]);
+    let f2 = f * f;
+    let p01 = c(1).mul_add(f, c(0));
+    let p23 = c(3).mul_add(f, c(2));
+    let p45 = c(5).mul_add(f, c(4));
+    let p03 = p23.mul_add(f2, p01);
+    let p46 = c(6).mul_add(f2, p45);
+    p46.mul_add(f2 * f2, p03)
+}
+
+/// 2^-k for an integer k in [-1023, 1022], from its exponent bits.
+#[inline]
+#[must_use]
+pub(crate) fn pow2_neg<W: F64Lanes>(k: W) -> W {
+    (W::splat(BIAS) - k).pow2_bits()
 }
 
 /// [`exp_neg_split`] with k given: any integer with |x - k ln 2| <= ln(2) / 2 + 10^-6 (the
@@ -172,6 +412,67 @@ mod tests {
         check(f64::MIN_POSITIVE);
         assert!(exp_neg_split(f64::NAN).0.is_nan());
         assert!(worst < 2.6e-9, "{worst:e}");
+    }
+
+    /// `exp2_neg_unit` within its stated 2.6e-9 (relative) of libm's 2^-f on a dense sweep of
+    /// [-1e-6, 1 + 1e-6], and within [0.5 (1 - 2^-25), 1 + 2^-25] on [0, 1]; the bound is met with little to spare (above 2.4e-9), so a worse fit fails.
+    #[test]
+    fn exp2_neg_unit_is_within_its_stated_error() {
+        let mut worst = 0.0f64;
+        for i in 0..=2_000_000 {
+            let f = -1e-6 + f64::from(i) * (1.0 + 2e-6) / 2e6;
+            let p = exp2_neg_unit(f);
+            worst = worst.max((p / libm::exp2(-f) - 1.0).abs());
+            if (0.0..=1.0).contains(&f) {
+                assert!((0.5 * (1.0 - libm::exp2(-25.0))..=1.0 + libm::exp2(-25.0)).contains(&p));
+            }
+        }
+        assert!(worst < 2.6e-9 && worst > 2.4e-9, "{worst:e}");
+    }
+
+    /// `tiny_big`, `tiny_small` and `join_tiny_f32` give `(p x) as f32` where p x is exact in
+    /// f64 (p of 15 significant bits, x of at most 38, so that the fused and unfused
+    /// multiply-add agree): y = p x across f32's subnormal range (every step of 2^-149 and
+    /// its midpoint near 0 and near the border 2^-126, every 97th elsewhere, ties to even),
+    /// the border and above it, normal results up to 1e30, and 0; `f32x8` lanes equal.
+    #[test]
+    fn tiny_rounding_rounds_as_the_conversion_does() {
+        use crate::wide::f64x8;
+        let check = |p: f64, x: f64| {
+            let got = join_tiny_f32(tiny_big(p, x), tiny_small(p, x));
+            #[allow(clippy::cast_possible_truncation)]
+            let want = (p * x) as f32;
+            assert_eq!(got.to_bits(), want.to_bits(), "p = {p:e}, x = {x:e}");
+            let (pl, xl) = (f64x8::splat(p), f64x8::splat(x));
+            let lanes = join_tiny_f32x8(tiny_big(pl, xl), tiny_small(pl, xl)).to_array();
+            assert!(
+                lanes.iter().all(|l| l.to_bits() == got.to_bits()),
+                "lanes at {p:e}, {x:e}"
+            );
+        };
+        let half_step = libm::exp2(-150.0);
+        for p in [
+            0.5,
+            0.5 + libm::exp2(-14.0),
+            0.75,
+            1.0 - libm::exp2(-14.0),
+            1.0,
+            1.25,
+        ] {
+            for j in 0..(1u32 << 25) + 4096 {
+                if j % 97 != 0 && j > 4096 && j.abs_diff(1 << 24) > 4096 {
+                    continue;
+                }
+                let x = f64::from(j) * half_step;
+                check(p, x);
+                check(p, x + libm::exp2(-162.0) * f64::from(j % 7));
+            }
+            let mut x = libm::exp2(-130.0);
+            while x < 1e30 {
+                check(p, x);
+                x *= 1.000_37;
+            }
+        }
     }
 
     /// `sqrt` within its stated 3.3e-11 of the correctly rounded root, from below (up to

@@ -105,7 +105,8 @@ fn exp_ftz_is_exp_with_subnormal_results_flushed_on_every_127th_bit_pattern() {
 /// microcode assist. `exp_ftz` on f32x8 lanes, `beckmann::d_fast` on every lane type and
 /// `beckmann::d` and `fresnel::conductor` on `f32` and `f32x8` (evaluated in f64, their
 /// subnormal results made from normal ones) raise neither for normal inputs (and 0), across every 127th f32 bit pattern
-/// and a (cosine, alpha) grid with cosines from 2^-149 to 1, as does
+/// and a (cosine, alpha) grid with cosines from 2^-149 to 1 (for `beckmann::d` also the
+/// cosines where D crosses 2^-126 and 2^-149), as does
 /// `cook_torrance::ggx_conductor_local` on `f32` and `f32x8` (with the `ggx` feature) for
 /// directions at those cosines. This is the only `unsafe` in the crate's tests: reading
 /// and clearing the flag register.
@@ -167,6 +168,43 @@ fn normal_inputs_meet_no_subnormal_number() {
                 assert!(!flagged(), "f64x4 d_fast({c64:?}, {a}) met a subnormal");
             }
             checked += 8;
+        }
+    }
+    // beckmann::d on f32 and f32x8 at the cosines where D crosses 2^-126 (its rounding
+    // switches from the converted part to the multiply-add's bits) and 2^-149 (where it
+    // rounds to 0), 32 floats on each side, every alpha above.
+    for &a in &alphas {
+        let d64 = |c: f64| {
+            let (c2, a2) = (c * c, a * a);
+            (-(1.0 - c2) / (c2 * a2)).exp() / (std::f64::consts::PI * a2 * c2 * c2)
+        };
+        let peak = (1.0 / (std::f64::consts::SQRT_2 * a)).min(1.0);
+        for target in [f64::from(f32::MIN_POSITIVE), 1.401_298_464_324_817e-45] {
+            let (mut lo, mut hi) = (1e-30f64, peak);
+            for _ in 0..200 {
+                let m = 0.5 * (lo + hi);
+                if d64(m) < target {
+                    lo = m;
+                } else {
+                    hi = m;
+                }
+            }
+            let c0 = (lo as f32).to_bits();
+            for k in (0..64u32).step_by(8) {
+                let c32: [f32; 8] =
+                    core::array::from_fn(|l| f32::from_bits(c0 + k + l as u32 - 32));
+                clear();
+                let (cv, av) = std::hint::black_box((f32x8::new(c32), f32x8::splat(a as f32)));
+                std::hint::black_box(beckmann::d(cv, av));
+                assert!(!flagged(), "f32x8 d({c32:?}, {a}) met a subnormal");
+                for &v in &c32 {
+                    clear();
+                    let (cs, as_) = std::hint::black_box((v, a as f32));
+                    std::hint::black_box(beckmann::d(cs, as_));
+                    assert!(!flagged(), "f32 d({v:e}, {a}) met a subnormal");
+                }
+                checked += 8;
+            }
         }
     }
     // The exact conductor on f32 and f32x8 (evaluated in f64) where F falls into f32's
