@@ -19,9 +19,10 @@
 //! [`COOK_TORRANCE`] and [`SAMPLING`], [`SAMPLING`] needs [`GGX`] and [`BECKMANN`], [`LAYERS`]
 //! needs [`GGX`] and [`FRESNEL`], [`ROUGH_DIELECTRIC`] needs [`GGX`], [`FRESNEL`], [`BECKMANN`]
 //! and [`SAMPLING`], [`TRANSMISSION`] needs those and [`ROUGH_DIELECTRIC`]; [`IRIDESCENCE`]
-//! needs only [`COMMON`]; [`ENGINE`] needs [`GGX`], [`FRESNEL`] and [`DIFFUSE`]). No family
-//! defines a name another family defines, so any such subset concatenated after [`COMMON`] is
-//! one valid WGSL module:
+//! needs only [`COMMON`]; [`ENGINE`] needs [`GGX`], [`FRESNEL`] and [`DIFFUSE`]; [`LAYERED`]
+//! needs [`TRANSMISSION`] and what it needs, [`LAYERS`] and [`IRIDESCENCE`]). No family defines
+//! a name another family defines, so any such subset concatenated after [`COMMON`] is one valid
+//! WGSL module:
 //!
 //! ```
 //! let source = [brdf::wgsl::COMMON, brdf::wgsl::GGX, brdf::wgsl::FRESNEL].concat();
@@ -167,6 +168,15 @@ pub const IRIDESCENCE: &str = include_str!("../wgsl/iridescence.wgsl");
 /// [`GGX`], [`FRESNEL`] and [`DIFFUSE`] before it.
 pub const ENGINE: &str = include_str!("../wgsl/engine.wgsl");
 
+/// The twins of `brdf::layers::layered::Layered`'s `eval` and `lobe_probabilities`
+/// (`layers_layered_Layered_eval`, ...), taking the material as the 22 arguments of its
+/// constructor and builders (base, sheen, clearcoat, anisotropy, iridescence, transmission,
+/// volume; each off at its glTF default) before the local-frame directions; the coat normal
+/// is the shading normal and the multiple-scattering compensation is off. Composed from the
+/// lobes' twins in the Rust order: needs [`GGX`], [`FRESNEL`], [`BECKMANN`], [`SAMPLING`],
+/// [`ROUGH_DIELECTRIC`], [`TRANSMISSION`], [`LAYERS`] and [`IRIDESCENCE`] before it.
+pub const LAYERED: &str = include_str!("../wgsl/layered.wgsl");
+
 /// [`COMMON`] followed by every family, each after the families it needs: one module defining
 /// every twin.
 pub const ALL: &str = concat!(
@@ -188,6 +198,7 @@ pub const ALL: &str = concat!(
     include_str!("../wgsl/transmission.wgsl"),
     include_str!("../wgsl/iridescence.wgsl"),
     include_str!("../wgsl/engine.wgsl"),
+    include_str!("../wgsl/layered.wgsl"),
 );
 
 /// One family's WGSL, with the families it calls into.
@@ -288,5 +299,19 @@ pub const FAMILIES: &[Family] = &[
         name: "engine",
         source: ENGINE,
         needs: &["ggx", "fresnel", "diffuse"],
+    },
+    Family {
+        name: "layered",
+        source: LAYERED,
+        needs: &[
+            "ggx",
+            "fresnel",
+            "beckmann",
+            "sampling",
+            "rough_dielectric",
+            "transmission",
+            "layers",
+            "iridescence",
+        ],
     },
 ];

@@ -154,3 +154,47 @@ fn the_wgsl_sheen_albedo_table_is_the_crates_bit_for_bit() {
         .collect();
     assert_eq!(wgsl, rust);
 }
+
+#[test]
+fn broken_layered_twins_leave_their_bound_on_the_grid() {
+    // A wrong constant: the dielectric's 1 - F0 read as 0.9 (the diffuse weight).
+    assert_caught(
+        "layered",
+        "layers::layered::Layered::eval",
+        "0.96 * one_minus_w",
+        "0.9 * one_minus_w",
+        0.05,
+    );
+    // Swapped arguments: the anisotropy frame rotated the other way.
+    assert_caught(
+        "layered",
+        "layers::layered::Layered::eval",
+        "c * w.x + s * w.y, c * w.y - s * w.x",
+        "c * w.x - s * w.y, c * w.y + s * w.x",
+        0.01,
+    );
+    // A wrong branch: the volumetric lobe where the thin-walled one belongs, and back.
+    assert_caught(
+        "layered",
+        "layers::layered::Layered::eval",
+        "select(f_vol, f_thin, thin)",
+        "select(f_thin, f_vol, thin)",
+        0.01,
+    );
+    // A wrong constant: the lobe-probability floor 1/16 read as 1/8.
+    assert_caught(
+        "layered",
+        "layers::layered::Layered::lobe_probabilities",
+        "0.0625",
+        "0.125",
+        0.05,
+    );
+    // Swapped arguments: the average Schlick weights w = 1/21 and 1 - w exchanged.
+    assert_caught(
+        "layered",
+        "layers::layered::Layered::lobe_probabilities",
+        "0.0476190485, 0.952380955",
+        "0.952380955, 0.0476190485",
+        0.05,
+    );
+}
