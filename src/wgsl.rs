@@ -168,8 +168,8 @@ pub const IRIDESCENCE: &str = include_str!("../wgsl/iridescence.wgsl");
 /// [`GGX`], [`FRESNEL`] and [`DIFFUSE`] before it.
 pub const ENGINE: &str = include_str!("../wgsl/engine.wgsl");
 
-/// The twins of `brdf::layers::layered::Layered`'s `eval` and `lobe_probabilities`
-/// (`layers_layered_Layered_eval`, ...), taking the material as the 22 arguments of its
+/// The twins of `brdf::layers::layered::Layered`'s `eval`, `lobe_probabilities`, `pdf` and
+/// `sample` (`layers_layered_Layered_eval`, ...), taking the material as the 22 arguments of its
 /// constructor and builders (base, sheen, clearcoat, anisotropy, iridescence, transmission,
 /// volume; each off at its glTF default) before the local-frame directions; the coat normal
 /// is the shading normal and the multiple-scattering compensation is off. Composed from the

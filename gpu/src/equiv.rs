@@ -108,7 +108,8 @@ pub type Grid = &'static [(&'static str, &'static [f64])];
 /// alpha floor) and 1/2; the film's thickness 0 (off whatever its factor); a thin-walled and
 /// a volumetric transmission; views at 16 and 37 degrees (in two azimuths, for the
 /// anisotropy's rotation) and at the horizon; lights back-scattered, retro-reflected and
-/// below the surface (the transmission lobe). No cosine is exactly 1 and no half vector the
+/// below the surface (the transmission lobe); the sampler's lobe choice across the four lobes.
+/// No cosine is exactly 1 and no half vector the
 /// normal: the sheen's twin raises 0 to a power there, which WGSL's pow (exp2 of log2) does
 /// not promise.
 pub const GRIDS: &[(&str, Grid)] = &[
@@ -241,6 +242,8 @@ pub const GRIDS: &[(&str, Grid)] = &[
             ("wi_x", &[-0.8, 0.6]),
             ("wi_y", &[0.0]),
             ("wi_z", &[0.6, -0.6, 0.8, -0.8]),
+            ("u1", &[0.02, 0.3, 0.6, 0.97]),
+            ("u2", &[0.3]),
         ],
     ),
 ];

@@ -397,17 +397,6 @@ pub const NO_TWIN: &[(&str, &str)] = &[
         "a 32-point quadrature in f64, computed once per material on the CPU, not per pixel",
     ),
     (
-        "layers::layered::Layered::pdf",
-        "not written yet: the mixture pdf over the coat's, the anisotropic base's and the \
-         transmission lobe's visible-normal densities (layers_layered_Layered_lobe_probabilities \
-         gives its weights)",
-    ),
-    (
-        "layers::layered::Layered::sample",
-        "not written yet: the one-sample lobe selection over the GGX visible-normal and \
-         cosine samplers, returning the mixture pdf (see layers::layered::Layered::pdf)",
-    ),
-    (
         "rough_dielectric::beckmann_sample",
         "draws its facet normal with sampling::beckmann_vndf, whose erf_inv (a Newton \
          polish) has no twin",

@@ -197,4 +197,36 @@ fn broken_layered_twins_leave_their_bound_on_the_grid() {
         "0.952380955, 0.0476190485",
         0.05,
     );
+    // Swapped arguments: the coat's and the specular lobe's probabilities exchanged.
+    assert_caught(
+        "layered",
+        "layers::layered::Layered::pdf",
+        "p.x * coat + p.y * spec",
+        "p.x * spec + p.y * coat",
+        0.05,
+    );
+    // A wrong branch: the thin-walled transmission density for the volume, and back.
+    assert_caught(
+        "layered",
+        "layers::layered::Layered::pdf",
+        "select(select(0.0, p_vol, pair), p_thin, thin)",
+        "select(p_thin, select(0.0, p_vol, pair), thin)",
+        0.01,
+    );
+    // A wrong branch: the coat's direction where the specular lobe was drawn, and back.
+    assert_caught(
+        "layered",
+        "layers::layered::Layered::sample",
+        "wi_spec, is_spec), wi_coat, is_coat)",
+        "wi_coat, is_spec), wi_spec, is_coat)",
+        0.05,
+    );
+    // Swapped arguments: the specular lobe's u rescaled by the coat's probability.
+    assert_caught(
+        "layered",
+        "layers::layered::Layered::sample",
+        "brdf_layered_rescale(u, c1, p.y)",
+        "brdf_layered_rescale(u, c1, p.x)",
+        0.02,
+    );
 }
