@@ -19,8 +19,10 @@
 //! [`COOK_TORRANCE`] and [`SAMPLING`], [`SAMPLING`] needs [`GGX`] and [`BECKMANN`], [`LAYERS`]
 //! needs [`GGX`] and [`FRESNEL`], [`ROUGH_DIELECTRIC`] needs [`GGX`], [`FRESNEL`], [`BECKMANN`]
 //! and [`SAMPLING`], [`TRANSMISSION`] needs those and [`ROUGH_DIELECTRIC`]; [`IRIDESCENCE`]
-//! needs only [`COMMON`]). No family defines a name another family defines, so any such subset
-//! concatenated after [`COMMON`] is one valid WGSL module:
+//! needs only [`COMMON`]; [`ENGINE`] needs [`GGX`], [`FRESNEL`] and [`DIFFUSE`]; [`LAYERED`]
+//! needs [`TRANSMISSION`] and what it needs, [`LAYERS`] and [`IRIDESCENCE`]). No family defines
+//! a name another family defines, so any such subset concatenated after [`COMMON`] is one valid
+//! WGSL module:
 //!
 //! ```
 //! let source = [brdf::wgsl::COMMON, brdf::wgsl::GGX, brdf::wgsl::FRESNEL].concat();
@@ -128,8 +130,9 @@ pub const IBL: &str = include_str!("../wgsl/ibl.wgsl");
 pub const SAMPLING: &str = include_str!("../wgsl/sampling.wgsl");
 
 /// The twins of `brdf::layers`' glTF extension lobes: the Charlie sheen's D, fitted Lambda
-/// and V, Neubelt's and Ashikhmin's cloth terms, the sheen lobe, the two analytic sheen albedo
-/// fits and the albedo scaling; the clearcoat's Fresnel, Kelemen's V, the coat lobes and the
+/// and V, Neubelt's and Ashikhmin's cloth terms, the sheen lobe, the sheen albedo read from
+/// the built-in 16 x 16 table (a constant array, `layers_sheen_albedo`), the two analytic sheen
+/// albedo fits and the albedo scaling; the clearcoat's Fresnel, Kelemen's V, the coat lobes and the
 /// layering; F0 from IOR and the specular extension's dielectric F0; the anisotropy's tangent
 /// width, direction and bent reflection vector. Needs [`GGX`] and [`FRESNEL`] before it.
 pub const LAYERS: &str = include_str!("../wgsl/layers.wgsl");
@@ -157,6 +160,23 @@ pub const TRANSMISSION: &str = include_str!("../wgsl/transmission.wgsl");
 /// coefficients instead of adding `atan2` phases.
 pub const IRIDESCENCE: &str = include_str!("../wgsl/iridescence.wgsl");
 
+/// The twins of `brdf::engine::Convention`'s methods (`engine_Convention_alpha`, `_f90`,
+/// `_fresnel`, `_specular`, `_diffuse`, `_brdf`), the receiver a `u32` index into
+/// `engine::ALL` (0 = three.js, 1 = Filament, 2 = bevy, 3 = Unreal Engine 4, 4 = the Khronos
+/// glTF sample viewer): each engine's floors, guards, Fresnel weight, F90 rule and diffuse
+/// lobe over the crate's stable kernels, to run beside that engine's own shader code. Needs
+/// [`GGX`], [`FRESNEL`] and [`DIFFUSE`] before it.
+pub const ENGINE: &str = include_str!("../wgsl/engine.wgsl");
+
+/// The twins of `brdf::layers::layered::Layered`'s `eval`, `lobe_probabilities`, `pdf` and
+/// `sample` (`layers_layered_Layered_eval`, ...), taking the material as the 22 arguments of its
+/// constructor and builders (base, sheen, clearcoat, anisotropy, iridescence, transmission,
+/// volume; each off at its glTF default) before the local-frame directions; the coat normal
+/// is the shading normal and the multiple-scattering compensation is off. Composed from the
+/// lobes' twins in the Rust order: needs [`GGX`], [`FRESNEL`], [`BECKMANN`], [`SAMPLING`],
+/// [`ROUGH_DIELECTRIC`], [`TRANSMISSION`], [`LAYERS`] and [`IRIDESCENCE`] before it.
+pub const LAYERED: &str = include_str!("../wgsl/layered.wgsl");
+
 /// [`COMMON`] followed by every family, each after the families it needs: one module defining
 /// every twin.
 pub const ALL: &str = concat!(
@@ -177,6 +197,8 @@ pub const ALL: &str = concat!(
     include_str!("../wgsl/rough_dielectric.wgsl"),
     include_str!("../wgsl/transmission.wgsl"),
     include_str!("../wgsl/iridescence.wgsl"),
+    include_str!("../wgsl/engine.wgsl"),
+    include_str!("../wgsl/layered.wgsl"),
 );
 
 /// One family's WGSL, with the families it calls into.
@@ -272,5 +294,24 @@ pub const FAMILIES: &[Family] = &[
         name: "iridescence",
         source: IRIDESCENCE,
         needs: &[],
+    },
+    Family {
+        name: "engine",
+        source: ENGINE,
+        needs: &["ggx", "fresnel", "diffuse"],
+    },
+    Family {
+        name: "layered",
+        source: LAYERED,
+        needs: &[
+            "ggx",
+            "fresnel",
+            "beckmann",
+            "sampling",
+            "rough_dielectric",
+            "transmission",
+            "layers",
+            "iridescence",
+        ],
     },
 ];

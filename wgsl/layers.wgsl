@@ -139,6 +139,67 @@ fn layers_sheen_albedo_fit_threejs(n_dot_v: f32, roughness: f32) -> f32 {
     return saturate(exp(a * mu + b) + k);
 }
 
+// The sheen albedo E(mu, alpha) of the glTF lobe (layers::sheen::ALBEDO_TABLE, bit for bit):
+// entry 16 i + j is E at mu_j = (j + 1/2) / 16 and alpha_i = ((i + 1/2) / 16)^2, the adaptive
+// cubature of D_charlie V_charlie cos rounded to f32. A shader may as well bind it as a 16 x 16
+// texture with linear filtering and clamp-to-edge.
+const BRDF_SHEEN_ALBEDO_TABLE: array<f32, 256> = array<f32, 256>(
+    1.6336572e0f, 1.0216756e-1f, 3.6620144e-3f, 5.9458387e-5f, 3.771664e-7f, 8.1564694e-10f, 5.045271e-13f, 7.824237e-17f,
+    2.9398514e-21f, 1.4597238e-26f, 5.184346e-33f, 6.2848e-41f, 0e0f, 0e0f, 0e0f, 0e0f,
+    1.4023854e0f, 5.5475646e-1f, 2.2799633e-1f, 9.036512e-2f, 3.3441372e-2f, 1.1290542e-2f, 3.401858e-3f, 8.924634e-4f,
+    1.9784989e-4f, 3.566953e-5f, 4.9437967e-6f, 4.847868e-7f, 2.9439468e-8f, 8.558086e-10f, 7.355044e-12f, 3.4970016e-15f,
+    1.0835003e0f, 5.9697247e-1f, 3.4867945e-1f, 2.0512225e-1f, 1.1904894e-1f, 6.730542e-2f, 3.668223e-2f, 1.9070901e-2f,
+    9.348924e-3f, 4.2665396e-3f, 1.7725755e-3f, 6.4904004e-4f, 1.9910524e-4f, 4.6766767e-5f, 6.9172484e-6f, 3.339754e-7f,
+    9.085049e-1f, 5.786904e-1f, 3.9018586e-1f, 2.6736474e-1f, 1.8313263e-1f, 1.2420451e-1f, 8.282022e-2f, 5.394022e-2f,
+    3.4096766e-2f, 2.0815693e-2f, 1.21156145e-2f, 6.6007124e-3f, 3.2741306e-3f, 1.4094089e-3f, 4.757733e-4f, 9.1335285e-5f,
+    8.111899e-1f, 5.613416e-1f, 4.0971053e-1f, 3.046904e-1f, 2.2758834e-1f, 1.6939126e-1f, 1.24921724e-1f, 9.084004e-2f,
+    6.487047e-2f, 4.543437e-2f, 3.0934216e-2f, 2.0220326e-2f, 1.2462671e-2f, 7.0284284e-3f, 3.4128486e-3f, 1.1995024e-3f,
+    7.589488e-1f, 5.541627e-1f, 4.253719e-1f, 3.3295506e-1f, 2.6233894e-1f, 2.0659702e-1f, 1.6183731e-1f, 1.256053e-1f,
+    9.631271e-2f, 7.301842e-2f, 5.436718e-2f, 3.938509e-2f, 2.7405683e-2f, 1.7947357e-2f, 1.0641514e-2f, 5.188837e-3f,
+    7.355207e-1f, 5.5741405e-1f, 4.4289994e-1f, 3.5893592e-1f, 2.9315022e-1f, 2.3971805e-1f, 1.9542608e-1f, 1.5829377e-1f,
+    1.2712902e-1f, 1.014364e-1f, 7.997771e-2f, 6.185107e-2f, 4.6467587e-2f, 3.3429377e-2f, 2.2456354e-2f, 1.3339513e-2f,
+    7.3190665e-1f, 5.696704e-1f, 4.6393684e-1f, 3.8538298e-1f, 3.2283676e-1f, 2.710696e-1f, 2.2723609e-1f, 1.8961509e-1f,
+    1.5724936e-1f, 1.2996635e-1f, 1.0657319e-1f, 8.6178586e-2f, 6.821297e-2f, 5.230635e-2f, 3.8214266e-2f, 2.5769532e-2f,
+    7.424639e-1f, 5.8918387e-1f, 4.88524e-1f, 4.1316205e-1f, 3.5253683e-1f, 3.0172706e-1f, 2.5808194e-1f, 2.200211e-1f,
+    1.8672994e-1f, 1.582763e-1f, 1.3347557e-1f, 1.1141897e-1f, 9.152939e-2f, 7.343767e-2f, 5.690744e-2f, 4.1786637e-2f,
+    7.630696e-1f, 6.140621e-1f, 5.158962e-1f, 4.4211087e-1f, 3.823781e-1f, 3.3190516e-1f, 2.8813198e-1f, 2.4954963e-1f,
+    2.1543041e-1f, 1.8602203e-1f, 1.6012965e-1f, 1.368175e-1f, 1.1549256e-1f, 9.577814e-2f, 7.7437446e-2f, 6.032602e-2f,
+    7.901597e-1f, 6.422015e-1f, 5.4474837e-1f, 4.714016e-1f, 4.1181487e-1f, 3.6120883e-1f, 3.1704938e-1f, 2.7785683e-1f,
+    2.4295472e-1f, 2.1272303e-1f, 1.8594825e-1f, 1.6166702e-1f, 1.3927054e-1f, 1.1837479e-1f, 9.874261e-2f, 8.023838e-2f,
+    8.2018477e-1f, 6.7119884e-1f, 5.733378e-1f, 4.997199e-1f, 4.3982068e-1f, 3.8880348e-1f, 3.4412104e-1f, 3.0429748e-1f,
+    2.6868424e-1f, 2.3775567e-1f, 2.1027714e-1f, 1.852611e-1f, 1.620861e-1f, 1.4036337e-1f, 1.19857624e-1f, 1.0044463e-1f,
+    8.493076e-1f, 6.983017e-1f, 5.995474e-1f, 5.253798e-1f, 4.650208e-1f, 4.135436e-1f, 3.683691e-1f, 3.2801268e-1f,
+    2.9183957e-1f, 2.6038992e-1f, 2.3241007e-1f, 2.0689347e-1f, 1.8320975e-1f, 1.6096798e-1f, 1.3993642e-1f, 1.2000332e-1f,
+    8.732815e-1f, 7.2041965e-1f, 6.2095505e-1f, 5.464202e-1f, 4.8579693e-1f, 4.3407393e-1f, 3.8864154e-1f, 3.4800535e-1f,
+    3.115391e-1f, 2.7983063e-1f, 2.5161335e-1f, 2.2586799e-1f, 2.0195915e-1f, 1.7949575e-1f, 1.5825044e-1f, 1.3812388e-1f,
+    8.87503e-1f, 7.3420596e-1f, 6.3492495e-1f, 5.6069577e-1f, 5.0037205e-1f, 4.4890475e-1f, 4.0367526e-1f, 3.631905e-1f,
+    3.2683614e-1f, 2.9524136e-1f, 2.6713666e-1f, 2.4149778e-1f, 2.1768823e-1f, 1.9531879e-1f, 1.7416716e-1f, 1.5414622e-1f,
+    8.872505e-1f, 7.362162e-1f, 6.387257e-1f, 5.659669e-1f, 5.068782e-1f, 4.5646042e-1f, 4.121285e-1f, 3.7241367e-1f,
+    3.367258e-1f, 3.0574048e-1f, 2.7819982e-1f, 2.5308356e-1f, 2.2975862e-1f, 2.0783998e-1f, 1.8711157e-1f, 1.6749877e-1f,
+);
+
+// The sheen albedo E(n.v, alpha) (layers::sheen::albedo): ALBEDO_TABLE read bilinearly in
+// (mu, sqrt(alpha)) between texel centres and constant beyond them (a texture's clamp-to-edge),
+// clamped to 1 (the table passes 1 at grazing views of the smoothest sheens). n.v clamped to
+// [0, 1]; alpha in [0, 1]. The Rust kernel interpolates in f64 and rounds once; this one
+// rounds each step.
+fn layers_sheen_albedo(n_dot_v: f32, alpha: f32) -> f32 {
+    let x = clamp(saturate(n_dot_v) * 16.0 - 0.5, 0.0, 15.0);
+    let y = clamp(sqrt(saturate(alpha)) * 16.0 - 0.5, 0.0, 15.0);
+    let j = min(u32(x), 14u);
+    let i = min(u32(y), 14u);
+    let fx = x - f32(j);
+    let fy = y - f32(i);
+    let k = i * 16u + j;
+    let a = BRDF_SHEEN_ALBEDO_TABLE[k];
+    let b = BRDF_SHEEN_ALBEDO_TABLE[k + 1u];
+    let c = BRDF_SHEEN_ALBEDO_TABLE[k + 16u];
+    let d = BRDF_SHEEN_ALBEDO_TABLE[k + 17u];
+    let lo = a + fx * (b - a);
+    let hi = c + fx * (d - c);
+    return min(lo + fy * (hi - lo), 1.0);
+}
+
 // KHR_materials_sheen's albedo scaling min(1 - max_rgb(sheenColor) e_v,
 // 1 - max_rgb(sheenColor) e_l); pass e_l = e_v for the view-only form, once per shading point.
 fn layers_sheen_albedo_scaling(

@@ -22,6 +22,10 @@
 //! | `asin` | `atan2(x, sqrt(1 - x * x))`: the steps as above, then 4096 + 0.5 | corners of the arguments' box |
 //! | `fma(a, b, c)` | `a * b + c`, two roundings as above | |
 //! | `min`, `max`, `clamp`, `saturate`, `abs`, negation | none (exact) | exact interval arithmetic |
+//! | integer (`u32`, `i32`) `+`, `-`, `*` | none (exact where it does not wrap, which is asserted) | operands exact |
+//! | `f32(i)` of an integer | none for \|i\| <= 2^24 (exactly representable), else 0.5 + 0.5 | |
+//! | `u32(x)`, `i32(x)` of an `f32` | none (truncation towards zero is exact) where every value of x's interval truncates to one integer; else the row is excluded | |
+//! | `table[i]`, a constant array at an exact index | none (the stored `f32`; a subnormal entry its own magnitude, for a flush) | |
 //!
 //! The extra half ULP on every operation pays for the freedom the specification gives an
 //! implementation to contract (fuse) and reassociate: one more rounding per operation. A chain
@@ -431,6 +435,9 @@ impl<'m> Interp<'m> {
                 let scalar = |v: &Val| matches!(v, Val::Num(_) | Val::Alt { .. });
                 let alt = |v: &Val| matches!(v, Val::Alt { .. });
                 match *op {
+                    B::Add | B::Subtract | B::Multiply if self.is_int(fr.f, *left) => {
+                        self.lift(&[a, b], |_, xy| int_binary(*op, xy[0], xy[1]))
+                    }
                     B::Add | B::Subtract if scalar(&a) && scalar(&b) => {
                         let sub = *op == B::Subtract;
                         let (span, leaves) = self.sum_span(fr, h);
@@ -548,6 +555,20 @@ impl<'m> Interp<'m> {
                         })
                     }
                 }
+            }
+            Expression::As {
+                expr,
+                kind,
+                convert: Some(_),
+            } => {
+                let x = self.expr(fr, *expr);
+                let from_int = self.is_int(fr.f, *expr);
+                self.lift(&[x], |s, n| s.convert(n[0], *kind, from_int))
+            }
+            Expression::Access { base, index } => {
+                let i = self.expr(fr, *index);
+                let f = fr.f;
+                self.lift(&[i], |s, n| s.table_entry(f, *base, n[0]))
             }
             other => panic!("{:?}: expression {other:?} is not modelled", fr.f.name),
         };
@@ -726,6 +747,96 @@ impl<'m> Interp<'m> {
             self.exclude("a reordered product may overflow");
         } else if small < TINY && p.v.abs() - p.e >= TINY {
             self.exclude("a reordered product may underflow");
+        }
+    }
+
+    /// Whether `h` is integer-typed (`u32`, `i32`): an integer literal or constant, a
+    /// conversion to an integer, an integer argument, or arithmetic, `min`, `max`, `clamp`,
+    /// `abs` or a `select` of such (WGSL's operands share their type, so the first tells).
+    fn is_int(&self, f: &Function, h: Handle<Expression>) -> bool {
+        use naga::ScalarKind as K;
+        let int = |ty: Handle<naga::Type>| {
+            matches!(&self.module.types[ty].inner,
+                naga::TypeInner::Scalar(s) if matches!(s.kind, K::Uint | K::Sint))
+        };
+        match &f.expressions[h] {
+            Expression::Literal(l) => matches!(
+                l,
+                Literal::U32(_) | Literal::I32(_) | Literal::AbstractInt(_)
+            ),
+            Expression::As { kind, .. } => matches!(kind, K::Uint | K::Sint),
+            Expression::FunctionArgument(i) => int(f.arguments[*i as usize].ty),
+            Expression::Constant(c) => int(self.module.constants[*c].ty),
+            Expression::Binary { left, .. } => self.is_int(f, *left),
+            Expression::Math {
+                fun: MathFunction::Min | MathFunction::Max | MathFunction::Clamp | MathFunction::Abs,
+                arg,
+                ..
+            } => self.is_int(f, *arg),
+            Expression::Select { accept, .. } => self.is_int(f, *accept),
+            _ => false,
+        }
+    }
+
+    /// The numeric conversion of `x` to `kind` (WGSL, "Conversion Built-in Functions"): an
+    /// integer to `f32` is exact below 2^24 (the twins' indices), else rounded to a
+    /// neighbour; an `f32` to an integer truncates towards zero (saturating, `u32` at 0), exact
+    /// where every value of x's interval truncates to the same integer; where they do not,
+    /// the row is excluded (a GPU may land on either integer, and an index on either entry).
+    fn convert(&mut self, x: Num, kind: naga::ScalarKind, from_int: bool) -> Num {
+        use naga::ScalarKind as K;
+        match kind {
+            K::Float if from_int => Num {
+                v: x.v,
+                e: x.e
+                    + if x.v.abs() <= f64::powi(2.0, 24) {
+                        0.0
+                    } else {
+                        allow(x.v, 0.0, 0.5 + EXTRA)
+                    },
+            },
+            K::Uint | K::Sint if from_int => x,
+            K::Uint | K::Sint => {
+                let t = |y: f64| {
+                    let t = y.trunc();
+                    if kind == K::Uint { t.max(0.0) } else { t }
+                };
+                if t(x.v - x.e) != t(x.v + x.e) {
+                    self.exclude("a conversion to an integer may truncate to either neighbour");
+                }
+                Num { v: t(x.v), e: 0.0 }
+            }
+            other => panic!("conversion to {other:?} is not modelled"),
+        }
+    }
+
+    /// Entry `i` (an exact integer) of the constant array `base` (a table the twin reads,
+    /// such as the sheen albedo texture): the stored `f32` exactly, or within its own
+    /// magnitude where it is subnormal (it may be flushed to 0). An index outside the array
+    /// is excluded.
+    fn table_entry(&mut self, f: &Function, base: Handle<Expression>, i: Num) -> Num {
+        let Expression::Constant(c) = f.expressions[base] else {
+            panic!("{:?}: indexing a non-constant is not modelled", f.name)
+        };
+        let Expression::Compose { components, .. } =
+            &self.module.global_expressions[self.module.constants[c].init]
+        else {
+            panic!("{:?}: the indexed constant is not an array", f.name)
+        };
+        assert!(i.e == 0.0, "{:?}: an index with an error bound", f.name);
+        #[allow(clippy::cast_possible_truncation, clippy::cast_sign_loss)]
+        let Some(&entry) = components.get(i.v as usize).filter(|_| i.v >= 0.0) else {
+            self.exclude("an index may leave its array");
+            return Num { v: 0.0, e: 0.0 };
+        };
+        let v = self.global(entry).scalar().expect("a table of numbers");
+        Num {
+            v: v.v,
+            e: if v.v != 0.0 && v.v.abs() < TINY {
+                v.v.abs()
+            } else {
+                0.0
+            },
         }
     }
 
@@ -976,6 +1087,25 @@ fn mark_statement_uses(block: &Block, flag: &mut [bool]) {
     }
 }
 
+/// `a op b` on integers (`+`, `-`, `*`): exact, as WGSL's integer arithmetic is where it does
+/// not wrap (the twins' table indices stay far below 2^31).
+fn int_binary(op: BinaryOperator, a: Num, b: Num) -> Num {
+    assert!(
+        a.e == 0.0 && b.e == 0.0,
+        "integer operands with an error bound"
+    );
+    let v = match op {
+        BinaryOperator::Add => a.v + b.v,
+        BinaryOperator::Subtract => a.v - b.v,
+        _ => a.v * b.v,
+    };
+    assert!(
+        v.abs() < f64::powi(2.0, 31),
+        "integer arithmetic that may wrap"
+    );
+    Num { v, e: 0.0 }
+}
+
 fn add(a: Num, b: Num) -> Num {
     add_in(a, b, 0.0)
 }
@@ -1068,6 +1198,57 @@ mod tests {
         assert_eq!(r[0].v, 3.0);
         // 0.5 for the rounding, 0.5 for a contraction: 1 ULP of 3 = 2^-22.
         assert!((r[0].e - f64::powi(2.0, -22)).abs() < 1e-12, "{}", r[0].e);
+    }
+
+    /// A 2 x 2 table indexed as wgsl/layers.wgsl indexes the sheen albedo.
+    const TABLE: &str = "const T: array<f32, 4> = array<f32, 4>(1.0, 2.5, 3.25, 1e-40);
+    fn f(x: f32, y: f32) -> vec3<f32> {
+        let j = min(u32(x), 0u);
+        let i = min(u32(y), 1u);
+        let row = i * 2u + j;
+        return vec3<f32>(f32(row), T[row], T[row + 1u]);
+    }";
+
+    #[test]
+    fn a_table_entry_at_an_integer_index_is_exact() {
+        let m = module(TABLE);
+        let mut i = Interp::new(&m);
+        let r = i.run("f", &[0.5, 1.25]).unwrap();
+        // row = 2 exactly (integer arithmetic charged as f32 would leave the index inexact,
+        // and the lookup would panic), T[2] = 3.25 exactly, T[3] subnormal: its magnitude
+        // for a flush to 0.
+        assert_eq!((r[0].v, r[0].e), (2.0, 0.0));
+        assert_eq!((r[1].v, r[1].e), (3.25, 0.0));
+        let tiny = f64::from(1e-40f32);
+        assert_eq!((r[2].v, r[2].e), (tiny, tiny));
+        // y = 7 clamps to row 1 by the min; an index past the end is excluded, not read.
+        assert_eq!(i.run("f", &[0.5, 7.0]).unwrap()[1].v, 3.25);
+        let past = module(
+            "const T: array<f32, 2> = array<f32, 2>(1.0, 2.0);
+            fn f(x: f32) -> f32 { return T[u32(x)]; }",
+        );
+        let mut i = Interp::new(&past);
+        assert_eq!(i.run("f", &[1.5]).unwrap()[0].v, 2.0);
+        assert!(i.run("f", &[2.5]).is_err());
+    }
+
+    #[test]
+    fn a_conversion_that_may_truncate_either_way_is_excluded() {
+        let m = module("fn f(a: f32) -> f32 { return f32(u32(a * 3.0)); }");
+        let mut i = Interp::new(&m);
+        // 3 (1/3 in f32) is 1 within a rounding: u32 of it may be 0 or 1.
+        assert!(i.run("f", &[f64::from(1.0f32 / 3.0)]).is_err());
+        let r = i
+            .run("f", &[0.5])
+            .expect("1.5 truncates to 1 whatever its rounding");
+        assert_eq!((r[0].v, r[0].e), (1.0, 0.0));
+    }
+
+    #[test]
+    fn integer_arithmetic_is_exact() {
+        let m = module("fn f(x: f32) -> f32 { let i = u32(x); return f32(i * 16u + 3u); }");
+        let r = Interp::new(&m).run("f", &[2.5]).unwrap();
+        assert_eq!((r[0].v, r[0].e), (35.0, 0.0));
     }
 
     #[test]

@@ -94,18 +94,162 @@ pub type Grid = &'static [(&'static str, &'static [f64])];
 /// interface) and at its maximum; a base index equal to the film's or the outside's, and below
 /// them (total reflection inside the film); a conductor's k from 0 to 1e30; normal and grazing
 /// incidence.
-pub const GRIDS: &[(&str, Grid)] = &[(
-    "iridescence::",
-    &[
-        ("thickness", &[0.0, 1e-3, 29.9, 30.0, 300.0, 10_000.0]),
-        ("ior", &[1.0, 1.33, 2.5, 10.0]),
-        ("outside_ior", &[1.0, 1.33, 2.5]),
-        ("base_ior", &[1.0, 1.33, 1.5, 0.3]),
-        ("base_eta", &[1.0, 0.2, 1.5]),
-        ("base_k", &[0.0, 3.0, 1e3, 1e30]),
-        ("cos_theta", &[0.0, 1e-4, 0.5, 0.999_999_94, 1.0]),
-    ],
-)];
+///
+/// The engines' conventions (`engine::Convention`, every `convention`): perceptual roughness
+/// 0, below every engine's floor (0.03), at the floors (Filament 0.045, three.js 0.0525, bevy
+/// 0.089) and up to 1; n.v 0, below Filament's and bevy's floor 1e-4 and at it; n.l 0 and
+/// 1e-5; n.h 0 and next to 1 (where the engines' own D forms cancel); v.h 0, 1e-4 and 1 (the
+/// Fresnel weights' ends); F0 summing to 0, below 0.0606 (F90 < 1 in Filament and bevy) and
+/// above; metallic 0 and 1.
+///
+/// The layered glTF material (`layers::layered::Layered`): each extension off (at its glTF
+/// default, which must leave the base bit for bit) and on; a base with a channel of 1 (the
+/// film over a base index capped at the largest f32), dielectric and metal, roughness 0 (the
+/// alpha floor) and 1/2; the film's thickness 0 (off whatever its factor); a thin-walled and
+/// a volumetric transmission; views at 16 and 37 degrees (in two azimuths, for the
+/// anisotropy's rotation) and at the horizon; lights back-scattered, retro-reflected and
+/// below the surface (the transmission lobe); the sampler's lobe choice across the four lobes.
+/// No cosine is exactly 1 and no half vector the
+/// normal: the sheen's twin raises 0 to a power there, which WGSL's pow (exp2 of log2) does
+/// not promise.
+pub const GRIDS: &[(&str, Grid)] = &[
+    (
+        "iridescence::",
+        &[
+            ("thickness", &[0.0, 1e-3, 29.9, 30.0, 300.0, 10_000.0]),
+            ("ior", &[1.0, 1.33, 2.5, 10.0]),
+            ("outside_ior", &[1.0, 1.33, 2.5]),
+            ("base_ior", &[1.0, 1.33, 1.5, 0.3]),
+            ("base_eta", &[1.0, 0.2, 1.5]),
+            ("base_k", &[0.0, 3.0, 1e3, 1e30]),
+            ("cos_theta", &[0.0, 1e-4, 0.5, 0.999_999_94, 1.0]),
+        ],
+    ),
+    (
+        "engine::Convention::alpha",
+        &[
+            ("convention", ENGINES),
+            (
+                "perceptual_roughness",
+                &[
+                    0.0,
+                    1e-3,
+                    0.01,
+                    0.03,
+                    0.045,
+                    0.0525,
+                    0.089,
+                    0.1,
+                    0.5,
+                    0.999_999_94,
+                    1.0,
+                ],
+            ),
+        ],
+    ),
+    (
+        "engine::Convention::f90",
+        &[
+            ("convention", ENGINES),
+            ("f0_r", &[0.0, 1e-3, 0.004, 0.02, 0.04, 1.0]),
+            ("f0_g", &[0.0, 1e-3, 0.004, 0.02, 0.04, 1.0]),
+            ("f0_b", &[0.0, 1e-3, 0.004, 0.02, 0.04, 1.0]),
+        ],
+    ),
+    (
+        "engine::Convention::fresnel",
+        &[
+            ("convention", ENGINES),
+            ("f0_r", &[0.0, 0.04, 1.0]),
+            ("f0_g", &[0.0, 0.04, 1.0]),
+            ("f0_b", &[0.0, 0.04, 1.0]),
+            ("f90", &[0.0, 0.5, 1.0]),
+            ("v_dot_h", &[0.0, 1e-4, 0.5, 0.999_999_94, 1.0]),
+        ],
+    ),
+    (
+        "engine::Convention::specular",
+        &[
+            ("convention", ENGINES),
+            ("n_dot_v", &[0.0, 1e-5, 1e-4, 0.5, 1.0]),
+            ("n_dot_l", &[0.0, 1e-5, 0.5, 1.0]),
+            ("n_dot_h", &[0.0, 0.5, 0.999_999_94, 1.0]),
+            ("v_dot_h", &[0.0, 1e-4, 1.0]),
+            ("roughness", &[0.0, 0.03, 0.0525, 0.5, 1.0]),
+            ("f0_r", &[0.0, 0.04, 1.0]),
+            ("f0_g", &[0.5]),
+            ("f0_b", &[0.5]),
+            ("f90", &[0.0, 1.0]),
+        ],
+    ),
+    (
+        "engine::Convention::diffuse",
+        &[
+            ("convention", ENGINES),
+            ("n_dot_v", &[0.0, 1e-5, 1e-4, 0.5, 1.0]),
+            ("n_dot_l", &[0.0, 1e-5, 0.5, 1.0]),
+            ("n_dot_h", &[0.5]),
+            ("v_dot_h", &[0.0, 0.5, 1.0]),
+            ("roughness", &[0.0, 0.03, 0.5, 1.0]),
+            ("diffuse_color_r", &[0.0, 0.5, 1.0]),
+            ("diffuse_color_g", &[0.5]),
+            ("diffuse_color_b", &[1.0]),
+        ],
+    ),
+    (
+        "engine::Convention::brdf",
+        &[
+            ("convention", ENGINES),
+            ("n_dot_v", &[0.0, 1e-5, 1e-4, 0.5, 1.0]),
+            ("n_dot_l", &[0.0, 1e-5, 0.5, 1.0]),
+            ("n_dot_h", &[0.5, 0.999_999_94, 1.0]),
+            ("v_dot_h", &[0.0, 0.5, 1.0]),
+            ("base_color_r", &[0.0, 0.01, 1.0]),
+            ("base_color_g", &[0.01, 0.5]),
+            ("base_color_b", &[0.02]),
+            ("metallic", &[0.0, 1.0]),
+            ("roughness", &[0.0, 0.0525, 1.0]),
+        ],
+    ),
+    (
+        "layers::layered::",
+        &[
+            ("base_color_r", &[0.9]),
+            ("base_color_g", &[0.5]),
+            ("base_color_b", &[1.0]),
+            ("metallic", &[0.0, 1.0]),
+            ("roughness", &[0.0, 0.5]),
+            ("sheen_color_r", &[0.0, 0.8]),
+            ("sheen_color_g", &[0.0]),
+            ("sheen_color_b", &[0.0]),
+            ("sheen_roughness", &[0.3]),
+            ("clearcoat", &[0.0, 1.0]),
+            ("clearcoat_roughness", &[0.1]),
+            ("anisotropy_strength", &[0.0, 0.8]),
+            ("anisotropy_rotation", &[0.5]),
+            ("iridescence_factor", &[0.0, 1.0]),
+            ("iridescence_thickness", &[0.0, 400.0]),
+            ("iridescence_ior", &[1.3]),
+            ("transmission", &[0.0, 1.0]),
+            ("volume_thickness", &[0.0, 1.0]),
+            ("volume_attenuation_color_r", &[1.0]),
+            ("volume_attenuation_color_g", &[1.0]),
+            ("volume_attenuation_color_b", &[1.0]),
+            ("volume_attenuation_distance", &[1.0]),
+            ("wo_x", &[0.0, 0.6, 1.0, 0.28]),
+            ("wo_y", &[0.0, 0.6]),
+            ("wo_z", &[0.0, 0.8, 0.96]),
+            ("wi_x", &[-0.8, 0.6]),
+            ("wi_y", &[0.0]),
+            ("wi_z", &[0.6, -0.6, 0.8, -0.8]),
+            ("u1", &[0.02, 0.3, 0.6, 0.97]),
+            ("u2", &[0.3]),
+        ],
+    ),
+];
+
+/// Every choice of `engine::Convention`'s receiver (an index into `engine::ALL`).
+const ENGINES: &[f64] = &[0.0, 1.0, 2.0, 3.0, 4.0];
 
 /// The rows of [`GRIDS`] for `k` (none where no grid names its family), in `f32`.
 ///
@@ -343,7 +487,8 @@ pub fn markdown(adapter: &str, figs: &[Figures], without: &[&str]) -> String {
         "# WGSL twins against the CPU\n\nAdapter: {adapter}\n\nDate: {date} (UTC); \
          `brdf-gpu-equiv`, rows per kernel: its argument extremes (up to {EXTREME_ROWS}), \
          {RANDOM_ROWS} random rows, up to {NEAR_END_ROWS} rows with cosines near 0 and 1, and the \
-         thin film's grid of stability cases (`GRIDS`).\n\n\
+         grids of stability cases (`GRIDS`: the thin film, the engines' conventions, the \
+         layered material).\n\n\
          Each value g is held to |g - c32| <= B + |X - c32|: B the bound the WGSL accuracy \
          table gives the twin's form at that input, X the form's exact value, c32 the CPU's \
          f32 result; bounds in ULP of c32. \"max ULP, normal\" is the largest distance over \

@@ -323,7 +323,7 @@ pub fn translate(module: &Module, info: &ModuleInfo) -> Result<Translations, Str
 /// reason in [`NO_TWIN`]: Fresnel, GGX and Beckmann, Cook-Torrance, the diffuse lobes, the
 /// Phong family, the metallic-roughness material, the punctual lights, the tonemappers and
 /// the colour transfer functions, the glTF extension lobes, the rough dielectric, glTF
-/// transmission and volume, and the thin film.
+/// transmission and volume, the thin film, and the engines' conventions.
 pub const TWINNED_MODULES: &[&str] = &[
     "fresnel",
     "ggx",
@@ -340,6 +340,7 @@ pub const TWINNED_MODULES: &[&str] = &[
     "rough_dielectric",
     "transmission",
     "iridescence",
+    "engine",
 ];
 
 /// Kernels without a WGSL twin, each with the reason: an exact path, or a path prefix ending
@@ -374,11 +375,6 @@ pub const NO_TWIN: &[(&str, &str)] = &[
          GGX visible-normal and GGX reflection samplers and the pdfs have twins)",
     ),
     (
-        "engine::Convention::",
-        "not written yet: each engine's shader has its own source, which this table of \
-         conventions reproduces on the CPU",
-    ),
-    (
         "ibl::prefilter::",
         "precomputation of prefiltered environment maps, run once per map, not per pixel",
     ),
@@ -399,16 +395,6 @@ pub const NO_TWIN: &[(&str, &str)] = &[
     (
         "ibl::energy::fresnel_avg_conductor",
         "a 32-point quadrature in f64, computed once per material on the CPU, not per pixel",
-    ),
-    (
-        "layers::sheen::albedo",
-        "a bilinear lookup of a precomputed table: a shader samples ALBEDO_TABLE as a texture \
-         (layers_sheen_albedo_fit_materialx is the analytic shader form)",
-    ),
-    (
-        "layers::layered::Layered::",
-        "not written yet: the layered material composes the twinned lobes; a shader composes \
-         them itself from its own material inputs",
     ),
     (
         "rough_dielectric::beckmann_sample",

@@ -72,6 +72,7 @@ fn the_check_catches_a_kernel_without_twin_or_reason() {
             "sampling",
             "rough_dielectric",
             "transmission",
+            "layered",
         ]
         .contains(&f.name)
     });

@@ -10,10 +10,12 @@
 //! | `compose` | no name is defined twice; the families compose as naga_oil modules |
 //! | `coverage` | every kernel of the shader families has a twin or a stated reason |
 //! | `readme` | the README's wgpu example is this crate's code and builds a pipeline |
+//! | `teeth` | the composed twins broken by hand (a constant, an argument, a branch) leave their bound on their grids |
 
 mod compose;
 mod coverage;
 mod equivalence;
 mod readme;
 mod signatures;
+mod teeth;
 mod translate;
