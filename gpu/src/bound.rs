@@ -67,6 +67,29 @@ use naga::{
 const TINY: f64 = 1.175_494_350_822_287_5e-38;
 /// f32's largest finite value.
 const MAX32: f64 = 3.402_823_466_385_288_6e38;
+/// The name suffix of a helper that is one Newton step x' = S(x; p) = x - f(x; p) / f'(x; p)
+/// on its first argument x, the others p its fixed parameters (`brdf_erf_inv_newton`).
+///
+/// Propagating x's error through S operation by operation charges it twice (once through x,
+/// once through the step f / f', which moves with x): the bound would double at each step
+/// where Newton in fact squares the error. The rule instead splits the computed result
+/// S~(x~) (x~ the iterate the implementation computed, within e of the form's x) as
+///
+///   S~(x~) - S(x) = [S(x~) - S(x)] + [S~(x~) - S(x~)],
+///
+/// the exact step's image of x's interval, and the error of evaluating the step at a point
+/// (the interpreter's ordinary bound of S's operations with x exact, and p with its errors:
+/// the residual's own error over the derivative, the subtraction's rounding). The image is
+/// the hull of S at x - e, x and x + e, and at S's fixed point x* where the interval holds
+/// it: with f' and f'' of one sign near x*, S(t) - x* = f''(xi) / (2 f'(t)) (t - x*)^2 is
+/// monotone on each side of x*, so those points bound it (`bound::tests` samples the
+/// interval densely to check it for erf_inv's steps). Where x* lies outside the interval the
+/// ends bound a monotone S; where inside, the image is [x*, the larger end] up to its
+/// quadratic contraction. The evaluation error is the largest of those at x - e, x and x + e
+/// (it is a few ULP of values that barely move over e). x* is found by iterating the form's
+/// own S in `f64` from x.
+pub const NEWTON_SUFFIX: &str = "_newton";
+
 /// The half ULP each operation is charged for a possible contraction or reordering.
 const EXTRA: f64 = 0.5;
 
@@ -184,22 +207,31 @@ pub struct Interp<'m> {
     /// Per function, per expression: whether its value may become part of a longer chain of
     /// sums ([`may_join_a_sum`]), so that a reordering could split it.
     in_sum: Vec<Vec<bool>>,
+    /// Per function, per expression: whether its value may become part of a longer chain of
+    /// products ([`may_join_a_product`]).
+    in_product: Vec<Vec<bool>>,
 }
 
 impl<'m> Interp<'m> {
     /// An interpreter of `module`'s functions.
     #[must_use]
     pub fn new(module: &'m Module) -> Self {
-        let in_sum = module
-            .functions
-            .iter()
-            .map(|(_, f)| may_join_a_sum(f))
-            .collect();
+        // naga orders a module's functions callees first, so each function's callees are
+        // done when it is (a callee not yet done counts as joining every chain).
+        let mut in_sum: Vec<Vec<bool>> = Vec::new();
+        let mut in_product: Vec<Vec<bool>> = Vec::new();
+        for (_, f) in module.functions.iter() {
+            let s = may_join_a_sum(f, &in_sum, module);
+            let p = may_join_a_product(f, &in_product, module);
+            in_sum.push(s);
+            in_product.push(p);
+        }
         Self {
             module,
             excluded: None,
             next_src: 0,
             in_sum,
+            in_product,
         }
     }
 
@@ -263,6 +295,48 @@ impl<'m> Interp<'m> {
             .unwrap_or_else(|| panic!("{:?} returns nothing", f.name))
     }
 
+    /// One Newton step x' = S(x; p) of a function named `..._newton` (first argument the
+    /// iterate x, the others its fixed parameters p, one `f32` result): [`NEWTON_SUFFIX`]'s
+    /// rule.
+    fn newton(&mut self, h: Handle<Function>, args: Vec<Val>) -> Val {
+        let args: Vec<Val> = args.into_iter().map(Val::collapsed).collect();
+        let Some(Val::Num(x)) = args.first().cloned() else {
+            panic!("a Newton step's first argument is its scalar iterate");
+        };
+        // S and its evaluation error with the iterate taken as exact at t.
+        let at = |s: &mut Self, t: f64| -> Num {
+            let mut a = args.clone();
+            a[0] = Val::Num(Num { v: t, e: 0.0 });
+            s.call(h, a)
+                .scalar()
+                .unwrap_or_else(|| panic!("a Newton step returns a number"))
+        };
+        let mid = at(self, x.v);
+        let (lo, hi) = (at(self, x.v - x.e), at(self, x.v + x.e));
+        // The fixed point of the form's own S (with the parameters' form values): Newton
+        // converges quadratically, so a few steps reach f64's resolution.
+        let mut root = mid.v;
+        for _ in 0..8 {
+            let next = at(self, root).v;
+            if next == root || !next.is_finite() {
+                break;
+            }
+            root = next;
+        }
+        let mut lo_v = lo.v.min(hi.v).min(mid.v);
+        let mut hi_v = lo.v.max(hi.v).max(mid.v);
+        if (x.v - x.e..=x.v + x.e).contains(&root) {
+            lo_v = lo_v.min(root);
+            hi_v = hi_v.max(root);
+        }
+        let image = (mid.v - lo_v).max(hi_v - mid.v);
+        let eval = mid.e.max(lo.e).max(hi.e);
+        Val::Num(Num {
+            v: mid.v,
+            e: image + eval,
+        })
+    }
+
     fn block(&mut self, fr: &mut Frame<'m>, b: &'m Block) -> Option<Val> {
         for s in b {
             match s {
@@ -278,7 +352,15 @@ impl<'m> Interp<'m> {
                     result,
                 } => {
                     let args = arguments.iter().map(|&a| self.expr(fr, a)).collect();
-                    let v = self.call(*function, args);
+                    let newton = self.module.functions[*function]
+                        .name
+                        .as_deref()
+                        .is_some_and(|n| n.ends_with(NEWTON_SUFFIX));
+                    let v = if newton {
+                        self.newton(*function, args)
+                    } else {
+                        self.call(*function, args)
+                    };
                     if let Some(r) = result {
                         fr.memo[r.index()] = Some(v);
                     }
@@ -438,7 +520,12 @@ impl<'m> Interp<'m> {
                         let alone = leaves == 2 && !self.in_sum[fr.fidx][h.index()];
                         self.lift(&[a, b], |_, xy| {
                             let y = if sub { neg(xy[1]) } else { xy[1] };
-                            if alone && sum_is_exact(xy[0], y) {
+                            let exact = round32_sum(xy[0].v, y.v)
+                                .filter(|&r| r == xy[0].v + y.v)
+                                .and_then(|r| exact_result(xy[0], y, r));
+                            if alone && let Some(r) = exact {
+                                r
+                            } else if alone && sum_is_exact(xy[0], y) {
                                 add_exact(xy[0], y)
                             } else {
                                 add_in(xy[0], y, span)
@@ -446,7 +533,17 @@ impl<'m> Interp<'m> {
                         })
                     }
                     B::Multiply if scalar(&a) && scalar(&b) => {
-                        let p = self.lift(&[a, b], |_, xy| mul(xy[0], xy[1]));
+                        // Two operands alone: no reassociation can split them.
+                        let alone = !self.in_product[fr.fidx][h.index()]
+                            && Self::product_leaves(fr, h) == 2;
+                        let p = self.lift(&[a, b], |_, xy| {
+                            if alone && let Some(p) = exact_result(xy[0], xy[1], xy[0].v * xy[1].v)
+                            {
+                                p
+                            } else {
+                                mul(xy[0], xy[1])
+                            }
+                        });
                         let hull = p.scalar().expect("a number");
                         self.check_product_chain(fr, h, hull);
                         p
@@ -543,9 +640,23 @@ impl<'m> Interp<'m> {
                         vals.extend(arg1.map(|a| self.expr(fr, a)));
                         vals.extend(arg2.map(|a| self.expr(fr, a)));
                         let fun = *fun;
-                        self.lift(&vals, |s, n| {
-                            s.math(fun, n[0], n.get(1).copied(), n.get(2).copied())
-                        })
+                        // fma(2^k, u, c), out of every sum: one rounding of an exact product's
+                        // sum ([`fma_pow2`]).
+                        let pow2 = match vals[..] {
+                            [Val::Num(a), Val::Num(b), Val::Num(c)]
+                                if fun == MathFunction::Fma && !self.in_sum[fr.fidx][h.index()] =>
+                            {
+                                fma_pow2(a, b, c).or_else(|| fma_pow2(b, a, c))
+                            }
+                            _ => None,
+                        };
+                        if let Some(n) = pow2 {
+                            Val::Num(n)
+                        } else {
+                            self.lift(&vals, |s, n| {
+                                s.math(fun, n[0], n.get(1).copied(), n.get(2).copied())
+                            })
+                        }
                     }
                 }
             }
@@ -656,6 +767,13 @@ impl<'m> Interp<'m> {
             }
             _ => out.push(h),
         }
+    }
+
+    /// The number of leaves of the chain of products `h` heads.
+    fn product_leaves(fr: &Frame<'m>, h: Handle<Expression>) -> usize {
+        let mut leaves = Vec::new();
+        Self::chain_leaves(fr, h, true, &mut leaves);
+        leaves.len()
     }
 
     /// The sum of the magnitudes (with their errors) of the leaves of the sum `h` heads: no
@@ -900,7 +1018,7 @@ struct Frame<'m> {
 /// use (an operand of `+` or `-`, `fma`'s addend, a negation, a vector's component, a select's
 /// value, a stored, passed or returned value, a conversion) may carry it into one, across
 /// an inlined call too, and so does not let a difference count as exact.
-fn may_join_a_sum(f: &Function) -> Vec<bool> {
+fn may_join_a_sum(f: &Function, done: &[Vec<bool>], module: &Module) -> Vec<bool> {
     use BinaryOperator as B;
     let mut flag = vec![false; f.expressions.len()];
     for (_, e) in f.expressions.iter() {
@@ -940,35 +1058,85 @@ fn may_join_a_sum(f: &Function) -> Vec<bool> {
             _ => {}
         }
     }
-    mark_statement_uses(&f.body, &mut flag);
+    mark_statement_uses(&f.body, &mut flag, done, module);
     flag
 }
 
-/// [`may_join_a_sum`]'s walk of the statements: stored, returned and passed values.
-fn mark_statement_uses(block: &Block, flag: &mut [bool]) {
+/// Per expression of `f`: whether its value may become part of a longer chain of products an
+/// implementation could reassociate: an operand of `*`, or any use that may carry it into one
+/// (as [`may_join_a_sum`]: a negation, a vector's component, a select's value, a stored,
+/// passed or returned value, a conversion). An operand of `+`, `-`, `/`, a comparison or a
+/// builtin's argument is not.
+fn may_join_a_product(f: &Function, done: &[Vec<bool>], module: &Module) -> Vec<bool> {
+    use BinaryOperator as B;
+    let mut flag = vec![false; f.expressions.len()];
+    for (_, e) in f.expressions.iter() {
+        let mut mark = |h: &Handle<Expression>| flag[h.index()] = true;
+        match e {
+            Expression::Binary {
+                op: B::Multiply,
+                left,
+                right,
+            } => {
+                mark(left);
+                mark(right);
+            }
+            Expression::Select { accept, reject, .. } => {
+                mark(accept);
+                mark(reject);
+            }
+            Expression::Compose { components, .. } => components.iter().for_each(&mut mark),
+            Expression::Unary { expr, .. } | Expression::As { expr, .. } => mark(expr),
+            Expression::AccessIndex { base, .. } | Expression::Access { base, .. } => mark(base),
+            Expression::Splat { value, .. } => mark(value),
+            Expression::Swizzle { vector, .. } => mark(vector),
+            _ => {}
+        }
+    }
+    mark_statement_uses(&f.body, &mut flag, done, module);
+    flag
+}
+
+/// [`may_join_a_sum`]'s walk of the statements: stored and returned values, and values passed
+/// to a function whose parameter may itself join a chain there (by `done`, the callees'
+/// flags; a callee not in `done` counts as joining).
+fn mark_statement_uses(block: &Block, flag: &mut [bool], done: &[Vec<bool>], module: &Module) {
     for st in block.iter() {
         match st {
             Statement::Store { value, .. } => flag[value.index()] = true,
             Statement::Return { value: Some(v) } => flag[v.index()] = true,
-            Statement::Call { arguments, .. } => {
-                for a in arguments {
-                    flag[a.index()] = true;
+            Statement::Call {
+                function,
+                arguments,
+                ..
+            } => {
+                let callee = &module.functions[*function];
+                for (i, a) in arguments.iter().enumerate() {
+                    let joins = done.get(function.index()).is_none_or(|cf| {
+                        callee.expressions.iter().any(|(h, e)| {
+                            matches!(e, Expression::FunctionArgument(j) if *j as usize == i)
+                                && cf[h.index()]
+                        })
+                    });
+                    if joins {
+                        flag[a.index()] = true;
+                    }
                 }
             }
-            Statement::Block(b) => mark_statement_uses(b, flag),
+            Statement::Block(b) => mark_statement_uses(b, flag, done, module),
             Statement::If { accept, reject, .. } => {
-                mark_statement_uses(accept, flag);
-                mark_statement_uses(reject, flag);
+                mark_statement_uses(accept, flag, done, module);
+                mark_statement_uses(reject, flag, done, module);
             }
             Statement::Loop {
                 body, continuing, ..
             } => {
-                mark_statement_uses(body, flag);
-                mark_statement_uses(continuing, flag);
+                mark_statement_uses(body, flag, done, module);
+                mark_statement_uses(continuing, flag, done, module);
             }
             Statement::Switch { cases, .. } => {
                 for c in cases {
-                    mark_statement_uses(&c.body, flag);
+                    mark_statement_uses(&c.body, flag, done, module);
                 }
             }
             _ => {}
@@ -1039,6 +1207,59 @@ fn power_of_two(n: Num) -> bool {
     let m = n.v.abs();
     // Normal as an f32 (a subnormal literal may be flushed to 0).
     n.e == 0.0 && m >= TINY && m.is_normal() && m.to_bits() & ((1u64 << 52) - 1) == 0
+}
+
+/// The exact result `r` (evaluated exactly in `f64`) of an operation on the exact operands `a`
+/// and `b`, where it is a normal `f32` (or 0): then every rounding mode, fused or not, returns
+/// it, so it carries no error. `None` otherwise.
+fn exact_result(a: Num, b: Num, r: f64) -> Option<Num> {
+    #[allow(clippy::cast_possible_truncation)]
+    let representable = f64::from(r as f32) == r && (r == 0.0 || r.abs() >= TINY);
+    (a.e == 0.0 && b.e == 0.0 && representable).then_some(Num { v: r, e: 0.0 })
+}
+
+/// The `f32` nearest the exact sum p + c of two `f64` (ties to even), or `None` where the
+/// `f64` sum rounds onto an `f32` midpoint (then the exact sum's side of it is not known here).
+/// Rounding to nearest is monotone and `f32` midpoints are `f64` numbers, so the `f64` sum
+/// lies on the exact sum's side of every midpoint it does not hit.
+fn round32_sum(p: f64, c: f64) -> Option<f64> {
+    let s = p + c;
+    let bb = s - p;
+    let err = (p - (s - bb)) + (c - bb);
+    #[allow(clippy::cast_possible_truncation)]
+    let r = f64::from(s as f32);
+    let tie = (s - r).abs() == 0.5 * ulp32(r.abs().min(s.abs()).max(TINY));
+    (err == 0.0 || !tie).then_some(r)
+}
+
+/// fma(k, u, c) with k an exact power of two and c exact: the product k u is exact (in `f64`
+/// too) for every u in its interval, so whether the implementation fuses or not the result is
+/// one rounding of k u + c, monotone in u: it lies between the roundings at the interval's
+/// ends. Where both ends round to the form's own `f32` value, that is exact: `2 u - 1` for u
+/// in [1/4, 1) by Sterbenz's lemma, wherever 2 u is a multiple of the result's ULP, and for a
+/// subnormal u (flushed or not, 2 u - 1 rounds to -1), so that `brdf_cos_sin_2pi`'s
+/// t = (2 u - 1) pi' keeps |t| <= pi' at u = 0 and u = 1 - 2^-24, where a charged rounding
+/// would push it past pi. Elsewhere the charge is the distance to the farther end's rounding
+/// (at most one ULP). `None` where the rule does not apply: an unfused k u may be subnormal
+/// (and flushed) at a normal u, or an end's sum lands on an `f32` midpoint. The caller checks
+/// that the value joins no longer sum that a reassociation could split.
+fn fma_pow2(k: Num, u: Num, c: Num) -> Option<Num> {
+    let (lo_u, hi_u) = (u.v - u.e, u.v + u.e);
+    let flushable = |t: f64| {
+        let p = (k.v * t).abs();
+        p != 0.0 && p < TINY
+    };
+    if !power_of_two(k) || c.e != 0.0 || ((flushable(lo_u) || flushable(hi_u)) && lo_u > 0.0) {
+        return None;
+    }
+    let lo = round32_sum(k.v * lo_u, c.v)?;
+    let hi = round32_sum(k.v * hi_u, c.v)?;
+    let v = k.v * u.v + c.v;
+    let e = (lo - v).abs().max((hi - v).abs());
+    Some(Num {
+        v,
+        e: e + flush(v, e),
+    })
 }
 
 fn mul(a: Num, b: Num) -> Num {
