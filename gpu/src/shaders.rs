@@ -368,12 +368,6 @@ pub const NO_TWIN: &[(&str, &str)] = &[
         "camera exposure from f64 settings, computed once on the CPU, not per pixel",
     ),
     (
-        "sampling::",
-        "not written yet: the Beckmann samplers (beckmann_vndf, beckmann_d_cos and \
-         beckmann_reflection need erf_inv, which has no twin; the cosine-hemisphere, GGX D cos, \
-         GGX visible-normal and GGX reflection samplers and the pdfs have twins)",
-    ),
-    (
         "engine::Convention::",
         "not written yet: each engine's shader has its own source, which this table of \
          conventions reproduces on the CPU",
@@ -409,11 +403,6 @@ pub const NO_TWIN: &[(&str, &str)] = &[
         "layers::layered::Layered::",
         "not written yet: the layered material composes the twinned lobes; a shader composes \
          them itself from its own material inputs",
-    ),
-    (
-        "rough_dielectric::beckmann_sample",
-        "draws its facet normal with sampling::beckmann_vndf, whose erf_inv (a Newton \
-         polish) has no twin",
     ),
 ];
 
