@@ -10,6 +10,9 @@
 //! | `+`, `-`, `*` | 0.5 (correctly rounded) + 0.5 | exact interval arithmetic |
 //! | `x - y` of two operands, alone (no longer chain), whose intervals keep y / 2 <= x <= 2 y (or one operand exactly 0) | 0.5 on the result (exact by Sterbenz's lemma; the half ULP pays for a contraction of an inexact operand's product into an `fma`, which rounds once), none where both operands are exact | exact |
 //! | `x * 2^k`, 2^k an exact operand | none (exact; a subnormal result: the 2^-126 below) | exact |
+//! | `x + y`, `x * y` of two exact operands, alone (no longer chain), whose exact result is a normal `f32` (or 0) | none (every rounding, fused or not, returns it) | |
+//! | `fma(2^k, u, c)`, 2^k and c exact, alone | the distance from the form's value to the roundings of 2^k u + c at u's interval's ends (none where both are that value: `2 u - 1` for u in [1/4, 1), at u = 0 and a subnormal u) | monotone in u |
+//! | a `..._newton` helper (one Newton step on its first argument) | the step's evaluation error with its iterate exact (the largest at the interval's ends and centre) | the exact step's image of the iterate's interval: its ends, centre and fixed point ([`NEWTON_SUFFIX`]) |
 //! | `round`, `floor` | none (correctly rounded, so exact); an argument interval that holds several integers' rounding ranges gives the alternatives below | |
 //! | `fract` | `x - floor(x)`, the steps as above | |
 //! | `x / y` | 2.5 (for \|y\| in [2^-126, 2^126], else no promise) + 0.5 | exact |
@@ -54,7 +57,9 @@
 //! implementation computes lies in one alternative's interval, so the bound stays sound.
 //!
 //! A comparison whose operands lie within their errors of each other may go either way on a
-//! GPU: a `select` on it takes the union of both operands' intervals. Where WGSL promises
+//! GPU: a `select` on it takes the union of both operands' intervals, except inside the
+//! helpers of the Beckmann visible-slope solve, whose safeguard branches are taken as the
+//! form takes them (an assumption, stated at [`FORM_BRANCHES`]: a known gap of this bound). Where WGSL promises
 //! nothing at all (a value beyond the largest finite `f32`, a divisor within its error of 0 or
 //! outside [2^-126, 2^126], the logarithm or square root of a value that may be negative), the
 //! row is excluded with the reason, listed and counted, not compared.
@@ -1149,7 +1154,8 @@ struct Frame<'m> {
 /// could reorder. Only a value whose every use is an operand of `*` or `/`, a comparison, a
 /// condition or a builtin's argument (but `fma`'s addend) is kept out of every sum; any other
 /// use (an operand of `+` or `-`, `fma`'s addend, a negation, a vector's component, a select's
-/// value, a stored, passed or returned value, a conversion) may carry it into one, across
+/// value, a stored or returned value, a value passed to a parameter that may itself join
+/// one in the callee, a conversion) may carry it into one, across
 /// an inlined call too, and so does not let a difference count as exact.
 fn may_join_a_sum(f: &Function, done: &[Vec<bool>], module: &Module) -> Vec<bool> {
     use BinaryOperator as B;
@@ -1616,8 +1622,15 @@ mod tests {
             let y = f64::from(y as f32);
             let q = 1.0 - y.abs();
             let x0 = i.run("sampling_erf_inv", &[y]).unwrap()[0].v;
-            // Intervals straddling the root, beside it, wide and narrow.
-            for (c, e) in [(x0, 1e-6), (x0, 1e-3), (x0 + 2e-3, 1e-3), (x0 - 0.05, 0.02)] {
+            // Intervals straddling the root off-centre (whose image reaches down to the root
+            // between the ends' and the centre's images), centred on it, beside it.
+            for (c, e) in [
+                (x0, 1e-6),
+                (x0, 1e-3),
+                (x0 + 5e-3, 1e-2),
+                (x0 + 2e-3, 1e-3),
+                (x0 - 0.05, 0.02),
+            ] {
                 let r = i
                     .newton_step("brdf_erf_inv_newton", Num { v: c, e }, &[y, q])
                     .unwrap();
@@ -1648,8 +1661,10 @@ mod tests {
             .newton_step("brdf_erf_inv_newton", Num { v: x, e: 1e-3 }, &[y, q])
             .unwrap();
         assert!(r.e < 1e-5, "{r:?}");
-        // Without the fixed point in its hull the rule would miss the step's value at the root:
-        // both ends of an interval centred there land on the same side of it.
+        // S'(x*) = 0: a first-order propagation would carry no error through the step, yet
+        // both ends of an interval centred on the root land on the same side of its image,
+        // K e^2 away; the rule's hull of the ends and the centre holds them (with the image
+        // dropped, the_newton_rule_bounds_the_step_over_its_whole_interval fails at y = -0.9).
         let (lo, hi) = (
             step_at(&mut i, x - 1e-3, y, q),
             step_at(&mut i, x + 1e-3, y, q),
@@ -1695,5 +1710,37 @@ mod tests {
                 r.e / ulp32(want)
             );
         }
+    }
+
+    #[test]
+    fn a_value_passed_joins_a_sum_only_where_the_callee_adds_it() {
+        // 1.5 - 1 is exact alone; passed to a divisor it stays so, passed to a sum it does not.
+        let m = module(
+            "fn g(q: f32) -> f32 { return 3.0 / q; }
+             fn h(q: f32) -> f32 { return q + 0.3; }
+             fn f(x: f32, y: f32) -> f32 { return g(x - y); }
+             fn k(x: f32, y: f32) -> f32 { return h(x - y); }",
+        );
+        let mut i = Interp::new(&m);
+        // g's division of an exact 0.5, and h's sum of an exact 0.5: only their own roundings.
+        let exact_q = i.run("g", &[0.5]).unwrap()[0];
+        assert_eq!(i.run("f", &[1.5, 1.0]).unwrap()[0], exact_q);
+        let exact_sum = i.run("h", &[0.5]).unwrap()[0];
+        let r = i.run("k", &[1.5, 1.0]).unwrap()[0];
+        assert!(r.e > exact_sum.e, "{r:?} {exact_sum:?}");
+    }
+
+    #[test]
+    fn the_solves_safeguard_takes_the_forms_branch() {
+        // The comparison of the test above: uncertain, both operands outside the solve's
+        // helpers, the form's only inside them.
+        let body = "{ return select(0.0, 10.0, (b * 0.1) * 10.0 - 1.0 >= 0.0); }";
+        let m = module(&format!(
+            "fn f(b: f32) -> f32 {body} fn {FORM_BRANCHES}f(b: f32) -> f32 {body}"
+        ));
+        let mut i = Interp::new(&m);
+        assert!(i.run("f", &[1.0]).unwrap()[0].e >= 10.0);
+        let r = i.run(&format!("{FORM_BRANCHES}f"), &[1.0]).unwrap()[0];
+        assert_eq!((r.v, r.e), (10.0, 0.0));
     }
 }
