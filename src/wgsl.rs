@@ -124,9 +124,11 @@ pub const MATERIAL: &str = include_str!("../wgsl/material.wgsl");
 pub const IBL: &str = include_str!("../wgsl/ibl.wgsl");
 
 /// The twins of `brdf::sampling`'s cosine-hemisphere sampler and pdf, reflection Jacobian,
-/// GGX D cos and visible-normal samplers (Heitz's and by spherical caps), D cos and
-/// visible-normal pdfs, GGX and Beckmann reflection pdfs, and the GGX reflection samplers with
-/// their weights (a constant F, scalar or RGB). Needs [`GGX`] and [`BECKMANN`] before it.
+/// GGX and Beckmann D cos and visible-normal samplers (GGX: Heitz's and by spherical caps;
+/// Beckmann: Heitz and d'Eon's inversion), D cos and visible-normal pdfs, GGX and Beckmann
+/// reflection samplers with their weights (a constant F, scalar or RGB) and pdfs, and erf^-1
+/// (with the f32 erf and erfc of the `libm` crate it is polished with). Needs [`GGX`] and
+/// [`BECKMANN`] before it.
 pub const SAMPLING: &str = include_str!("../wgsl/sampling.wgsl");
 
 /// The twins of `brdf::layers`' glTF extension lobes: the Charlie sheen's D, fitted Lambda
@@ -139,8 +141,8 @@ pub const LAYERS: &str = include_str!("../wgsl/layers.wgsl");
 
 /// The twins of `brdf::rough_dielectric`'s generalized half vector, BSDF
 /// (`rough_dielectric_eval`, the model a `u32`: 0 = GGX, 1 = Beckmann; the transport a `u32`:
-/// 0 = radiance, 1 = importance), pdf of both lobes and GGX sampler
-/// (`rough_dielectric_ggx_sample`; the Beckmann sampler, which needs erf_inv, has no twin).
+/// 0 = radiance, 1 = importance), pdf of both lobes and GGX and Beckmann samplers
+/// (`rough_dielectric_ggx_sample`, `rough_dielectric_beckmann_sample`).
 /// Needs [`GGX`], [`FRESNEL`], [`BECKMANN`] and [`SAMPLING`] before it.
 pub const ROUGH_DIELECTRIC: &str = include_str!("../wgsl/rough_dielectric.wgsl");
 

@@ -2,7 +2,7 @@
 // `rough_dielectric`: the generalized half vector, the BSDF (reflection and transmission, from
 // either side, radiance or importance transport) and the pdf of both lobes, over a microfacet
 // model given as a u32 (0 = GGX, 1 = Beckmann) with widths (alpha_x, alpha_y), and the GGX
-// sampler (the Beckmann sampler, whose visible normals need erf_inv, has no twin). Needs
+// and Beckmann samplers. Needs
 // common.wgsl, ggx.wgsl, fresnel.wgsl, beckmann.wgsl and sampling.wgsl.
 
 // (h, |r|^2) for the raw sum r = wi + wo / eta' (eta' > 1) or wi eta' + wo (eta' <= 1), a
@@ -258,6 +258,53 @@ fn rough_dielectric_ggx_sample(
     let i = brdf_ggx_smith(alpha_x, alpha_y, wi);
     // The floor keeps the unused branch finite where both cosines are 0.
     let ratio = i.x * (o.x + o.z) / max(i.x * o.z + o.x * i.z, 1.17549435e-38);
+    // (1 / eta')^2 capped, as in brdf_rough_dielectric_jacobian.
+    let r = min(1.0 / select(eta, 1.0 / eta, wo_z < 0.0), BRDF_F32_MAX);
+    let rc = min(r, 18446742974197923840.0);
+    let s = select(select(rc * rc, BRDF_F32_MAX, r >= 18446744073709551616.0), 1.0,
+        transport == 1u);
+    let w = select(brdf_rough_dielectric_cap_mul(ratio, s), ratio, choose_r);
+    let keep = live & (p > 0.0);
+    // eta = 1: the Dirac pass-through.
+    let matched = (eta == 1.0) & !((wo_x == 0.0) & (wo_y == 0.0) & (wo_z == 0.0));
+    return array<f32, 5>(select(wi.x, -wo_x, matched), select(wi.y, -wo_y, matched),
+        select(wi.z, -wo_z, matched), select(select(0.0, p, keep), BRDF_F32_MAX, matched),
+        select(select(0.0, w, keep), 1.0, matched));
+}
+
+// rough_dielectric_ggx_sample for a Beckmann interface: the visible normal m of
+// sampling_beckmann_vndf for sign(wo.z) wo (Heitz and d'Eon 2014), the same Fresnel choice on
+// u0, reflection or refraction, pdf = rough_dielectric_pdf(1u, ...) and weight G2 / G1(wo)
+// (times the radiance factor of a refraction), G2 / G1 written pole-free with the finite
+// |z| Lambda as |i.z| (|o.z| + |o.z| Lo) / (|o.z| |i.z| + |i.z| |o.z| Lo + |o.z| |i.z| Li)
+// (as in brdf_sampling_beckmann_reflection_parts). Edges as rough_dielectric_ggx_sample.
+fn rough_dielectric_beckmann_sample(
+    alpha_x: f32, alpha_y: f32, wo_x: f32, wo_y: f32, wo_z: f32, eta: f32, u0: f32, u1: f32,
+    u2: f32, transport: u32,
+) -> array<f32, 5> {
+    let wo = vec3<f32>(wo_x, wo_y, wo_z);
+    let wo_up = select(wo, vec3<f32>(-wo_x, -wo_y, -wo_z), wo_z < 0.0);
+    let m = brdf_beckmann_vndf_normal(alpha_x, alpha_y, wo_up, u1, u2);
+    let uc0 = brdf_clamp_u(u0);
+    let o_m = fma(wo_x, m.x, fma(wo_y, m.y, wo_z * m.z));
+    let f_r = fresnel_dielectric(o_m, eta);
+    let k = 2.0 * o_m;
+    let wr = vec3<f32>(m.x * k - wo_x, m.y * k - wo_y, m.z * k - wo_z);
+    let wt = brdf_rough_dielectric_refract(wo, m, eta);
+    // Reflection with probability F (1 under total internal reflection).
+    let choose_r = uc0 < f_r;
+    let wi = select(wt, wr, choose_r);
+    // A live sample: a reflection that stays on wo's side, a refraction that crosses.
+    let same = wo_z * wi.z > 0.0;
+    let cross = wo_z * wi.z < 0.0;
+    let live = (choose_r & same) | (!choose_r & cross);
+    let p = rough_dielectric_pdf(1u, alpha_x, alpha_y, wo_x, wo_y, wo_z, wi.x, wi.y, wi.z, eta);
+    let o = brdf_beckmann_smith(alpha_x, alpha_y, wo);
+    let i = brdf_beckmann_smith(alpha_x, alpha_y, wi);
+    let lo = brdf_beckmann_cos_lambda(o);
+    let den = o.x * i.x + i.x * lo + o.x * brdf_beckmann_cos_lambda(i);
+    // The floor keeps the unused branch finite where both cosines are 0.
+    let ratio = i.x * (o.x + lo) / max(den, 1.17549435e-38);
     // (1 / eta')^2 capped, as in brdf_rough_dielectric_jacobian.
     let r = min(1.0 / select(eta, 1.0 / eta, wo_z < 0.0), BRDF_F32_MAX);
     let rc = min(r, 18446742974197923840.0);

@@ -10,6 +10,9 @@
 //! | `+`, `-`, `*` | 0.5 (correctly rounded) + 0.5 | exact interval arithmetic |
 //! | `x - y` of two operands, alone (no longer chain), whose intervals keep y / 2 <= x <= 2 y (or one operand exactly 0) | 0.5 on the result (exact by Sterbenz's lemma; the half ULP pays for a contraction of an inexact operand's product into an `fma`, which rounds once), none where both operands are exact | exact |
 //! | `x * 2^k`, 2^k an exact operand | none (exact; a subnormal result: the 2^-126 below) | exact |
+//! | `x + y`, `x * y` of two exact operands, alone (no longer chain), whose exact result is a normal `f32` (or 0) | none (every rounding, fused or not, returns it) | |
+//! | `fma(2^k, u, c)`, 2^k and c exact, alone | the distance from the form's value to the roundings of 2^k u + c at u's interval's ends (none where both are that value: `2 u - 1` for u in [1/4, 1), at u = 0 and a subnormal u) | monotone in u |
+//! | a `..._newton` helper (one Newton step on its first argument) | the step's evaluation error with its iterate exact (the largest at the interval's ends and centre) | the exact step's image of the iterate's interval: its ends, centre and fixed point ([`NEWTON_SUFFIX`]) |
 //! | `round`, `floor` | none (correctly rounded, so exact); an argument interval that holds several integers' rounding ranges gives the alternatives below | |
 //! | `fract` | `x - floor(x)`, the steps as above | |
 //! | `x / y` | 2.5 (for \|y\| in [2^-126, 2^126], else no promise) + 0.5 | exact |
@@ -20,6 +23,7 @@
 //! | `pow(x, y)` | `exp2(y * log2(x))`, each step as above | |
 //! | `sin`, `cos` | absolute 2^-11 for x in [-pi, pi] (no promise outside) + 0.5 | Lipschitz 1, per alternative |
 //! | `asin` | `atan2(x, sqrt(1 - x * x))`: the steps as above, then 4096 + 0.5 | corners of the arguments' box |
+//! | `acos` | `atan2(sqrt(1 - x * x), x)`: the steps as above, then 4096 + 0.5 | corners of the arguments' box |
 //! | `fma(a, b, c)` | `a * b + c`, two roundings as above | |
 //! | `min`, `max`, `clamp`, `saturate`, `abs`, negation | none (exact) | exact interval arithmetic |
 //! | integer (`u32`, `i32`) `+`, `-`, `*` | none (exact where it does not wrap, which is asserted) | operands exact |
@@ -57,7 +61,9 @@
 //! implementation computes lies in one alternative's interval, so the bound stays sound.
 //!
 //! A comparison whose operands lie within their errors of each other may go either way on a
-//! GPU: a `select` on it takes the union of both operands' intervals. Where WGSL promises
+//! GPU: a `select` on it takes the union of both operands' intervals, except inside the
+//! helpers of the Beckmann visible-slope solve, whose safeguard branches are taken as the
+//! form takes them (an assumption, stated at [`FORM_BRANCHES`]: a known gap of this bound). Where WGSL promises
 //! nothing at all (a value beyond the largest finite `f32`, a divisor within its error of 0 or
 //! outside [2^-126, 2^126], the logarithm or square root of a value that may be negative), the
 //! row is excluded with the reason, listed and counted, not compared.
@@ -71,6 +77,47 @@ use naga::{
 const TINY: f64 = 1.175_494_350_822_287_5e-38;
 /// f32's largest finite value.
 const MAX32: f64 = 3.402_823_466_385_288_6e38;
+/// The name suffix of a helper that is one Newton step x' = S(x; p) = x - f(x; p) / f'(x; p)
+/// on its first argument x, the others p its fixed parameters (`brdf_erf_inv_newton`).
+///
+/// Propagating x's error through S operation by operation charges it twice (once through x,
+/// once through the step f / f', which moves with x): the bound would double at each step
+/// where Newton in fact squares the error. The rule instead splits the computed result
+/// S~(x~) (x~ the iterate the implementation computed, within e of the form's x) as
+///
+///   S~(x~) - S(x) = [S(x~) - S(x)] + [S~(x~) - S(x~)],
+///
+/// the exact step's image of x's interval, and the error of evaluating the step at a point
+/// (the interpreter's ordinary bound of S's operations with x exact, and p with its errors:
+/// the residual's own error over the derivative, the subtraction's rounding). The image is
+/// the hull of S at x - e, x and x + e, and at S's fixed point x* where the interval holds
+/// it: with f' and f'' of one sign near x*, S(t) - x* = f''(xi) / (2 f'(t)) (t - x*)^2 is
+/// monotone on each side of x*, so those points bound it (`bound::tests` samples the
+/// interval densely to check it for erf_inv's steps). Where x* lies outside the interval the
+/// ends bound a monotone S; where inside, the image is [x*, the larger end] up to its
+/// quadratic contraction. The evaluation error is the largest of those at x - e, x and x + e
+/// (it is a few ULP of values that barely move over e). x* is taken as S(S(x)), two of the
+/// form's own steps in `f64` from x. The rule serves erf^-1's polish (`brdf_erf_inv_newton`)
+/// and the Beckmann visible-slope inversion's safeguarded steps (`brdf_beckmann_vndf_newton`,
+/// its bracket a parameter): far from the root the interval's image is that of a smooth,
+/// monotone map of a tiny interval, near it the quadratic contraction above.
+pub const NEWTON_SUFFIX: &str = "_newton";
+
+/// The name prefix of the helpers of a safeguarded root solve (the Beckmann visible-slope
+/// inversion: its residual, bracket update and Newton-bisection step) whose comparisons are
+/// taken as the form takes them, whatever their operands' errors: the bracket's side, the
+/// bisection of an iterate outside the bracket, the fallback where the derivative is not
+/// positive. This is an assumption, not a promise of WGSL, and a known gap of this bound:
+/// near the root the residual's sign is within its error of 0 and an implementation may move
+/// the other end of the bracket, or (its iterate rounding just outside its bracket) bisect
+/// where the form takes a Newton step, and end the fixed number of steps at another iterate.
+/// On the CPU's f32 such a step and the form's choose alike (the step's direction and the
+/// bracket end it replaces follow the same residual), which is why the iterate stays inside
+/// its bracket; taking each comparison's two outcomes as independent, as elsewhere, loses that
+/// correlation and lets the bound double at each of the seven steps (every row of the
+/// Beckmann visible-normal samplers was excluded).
+pub const FORM_BRANCHES: &str = "brdf_beckmann_vndf_";
+
 /// The half ULP each operation is charged for a possible contraction or reordering.
 const EXTRA: f64 = 0.5;
 
@@ -188,22 +235,54 @@ pub struct Interp<'m> {
     /// Per function, per expression: whether its value may become part of a longer chain of
     /// sums ([`may_join_a_sum`]), so that a reordering could split it.
     in_sum: Vec<Vec<bool>>,
+    /// Per function, per expression: whether its value may become part of a longer chain of
+    /// products ([`may_join_a_product`]).
+    in_product: Vec<Vec<bool>>,
+    /// Calls already run in this row: function and arguments, result and exclusion.
+    cache: std::collections::HashMap<Vec<u64>, (Val, Option<Excluded>)>,
+}
+
+/// The cache key of a call whose arguments are numbers, booleans or vectors (`None` where
+/// one has alternatives, whose source numbering ties them to their row).
+fn call_key(h: Handle<Function>, args: &[Val]) -> Option<Vec<u64>> {
+    let mut k = vec![h.index() as u64];
+    for a in args {
+        match a {
+            Val::Num(n) => k.extend([1, n.v.to_bits(), n.e.to_bits()]),
+            Val::Bool { v, stable } => k.extend([2, u64::from(*v), u64::from(*stable)]),
+            Val::Vec(v) => {
+                k.extend([3, v.len() as u64]);
+                for n in v {
+                    k.extend([n.v.to_bits(), n.e.to_bits()]);
+                }
+            }
+            Val::Alt { .. } => return None,
+        }
+    }
+    Some(k)
 }
 
 impl<'m> Interp<'m> {
     /// An interpreter of `module`'s functions.
     #[must_use]
     pub fn new(module: &'m Module) -> Self {
-        let in_sum = module
-            .functions
-            .iter()
-            .map(|(_, f)| may_join_a_sum(f))
-            .collect();
+        // naga orders a module's functions callees first, so each function's callees are
+        // done when it is (a callee not yet done counts as joining every chain).
+        let mut in_sum: Vec<Vec<bool>> = Vec::new();
+        let mut in_product: Vec<Vec<bool>> = Vec::new();
+        for (_, f) in module.functions.iter() {
+            let s = may_join_a_sum(f, &in_sum, module);
+            let p = may_join_a_product(f, &in_product, module);
+            in_sum.push(s);
+            in_product.push(p);
+        }
         Self {
             module,
             excluded: None,
             next_src: 0,
             in_sum,
+            in_product,
+            cache: std::collections::HashMap::new(),
         }
     }
 
@@ -225,6 +304,7 @@ impl<'m> Interp<'m> {
             .find(|(_, f)| f.name.as_deref() == Some(name))
             .unwrap_or_else(|| panic!("no WGSL function {name}"));
         self.excluded = None;
+        self.cache.clear();
         let args: Vec<Val> = args
             .iter()
             .map(|&x| {
@@ -249,22 +329,117 @@ impl<'m> Interp<'m> {
         })
     }
 
+    /// One application of the Newton-step rule ([`NEWTON_SUFFIX`]) to the function `name`
+    /// from the iterate `x` (with its error) and exact parameters: the step's value and bound.
+    ///
+    /// # Errors
+    /// The reason WGSL promises nothing for this step.
+    ///
+    /// # Panics
+    /// If the module has no function `name`.
+    pub fn newton_step(&mut self, name: &str, x: Num, params: &[f64]) -> Result<Num, Excluded> {
+        let (h, _) = self
+            .module
+            .functions
+            .iter()
+            .find(|(_, f)| f.name.as_deref() == Some(name))
+            .unwrap_or_else(|| panic!("no WGSL function {name}"));
+        self.excluded = None;
+        let mut args = vec![Val::Num(x)];
+        args.extend(params.iter().map(|&v| Val::Num(Num { v, e: 0.0 })));
+        self.cache.clear();
+        let out = self.newton(h, args);
+        if let Some(why) = self.excluded {
+            return Err(why);
+        }
+        Ok(out.scalar().expect("a number"))
+    }
+
     fn exclude(&mut self, why: Excluded) {
         if self.excluded.is_none() {
             self.excluded = Some(why);
         }
     }
 
+    /// A call: its result, from the cache where the same function ran on the same arguments
+    /// within this row (the interpreter is deterministic; the exclusion it met comes with it).
     fn call(&mut self, h: Handle<Function>, args: Vec<Val>) -> Val {
+        let key = call_key(h, &args);
+        if let Some(k) = &key
+            && let Some((v, why)) = self.cache.get(k)
+        {
+            let (v, why) = (v.clone(), *why);
+            if let Some(w) = why {
+                self.exclude(w);
+            }
+            return v;
+        }
+        let before = self.excluded.take();
+        let v = self.run_body(h, args);
+        let why = self.excluded;
+        if before.is_some() {
+            self.excluded = before;
+        }
+        if let Some(k) = key {
+            self.cache.insert(k, (v.clone(), why));
+        }
+        v
+    }
+
+    fn run_body(&mut self, h: Handle<Function>, args: Vec<Val>) -> Val {
         let f = &self.module.functions[h];
         let mut frame = Frame {
             f,
             args,
             memo: vec![None; f.expressions.len()],
             fidx: h.index(),
+            form_branches: f
+                .name
+                .as_deref()
+                .is_some_and(|n| n.starts_with(FORM_BRANCHES)),
         };
         self.block(&mut frame, &f.body)
             .unwrap_or_else(|| panic!("{:?} returns nothing", f.name))
+    }
+
+    /// One Newton step x' = S(x; p) of a function named `..._newton` (first argument the
+    /// iterate x, the others its fixed parameters p, one `f32` result): [`NEWTON_SUFFIX`]'s
+    /// rule.
+    fn newton(&mut self, h: Handle<Function>, args: Vec<Val>) -> Val {
+        let args: Vec<Val> = args.into_iter().map(Val::collapsed).collect();
+        let Some(Val::Num(x)) = args.first().cloned() else {
+            panic!("a Newton step's first argument is its scalar iterate");
+        };
+        // S and its evaluation error with the iterate taken as exact at t.
+        let at = |s: &mut Self, t: f64| -> Num {
+            let mut a = args.clone();
+            a[0] = Val::Num(Num { v: t, e: 0.0 });
+            s.call(h, a)
+                .scalar()
+                .unwrap_or_else(|| panic!("a Newton step returns a number"))
+        };
+        let mid = at(self, x.v);
+        let (lo, hi) = if x.e > 0.0 {
+            (at(self, x.v - x.e), at(self, x.v + x.e))
+        } else {
+            (mid, mid)
+        };
+        // The fixed point of the form's own S (with the parameters' form values): S(x) is one
+        // Newton step from x, S(S(x)) another, within f''/(2 f') (S(x) - x*)^2 of it, beyond
+        // f64's resolution for the iterates at hand (x within a few f32 ULP of x*).
+        let root = if x.e > 0.0 { at(self, mid.v).v } else { mid.v };
+        let mut lo_v = lo.v.min(hi.v).min(mid.v);
+        let mut hi_v = lo.v.max(hi.v).max(mid.v);
+        if (x.v - x.e..=x.v + x.e).contains(&root) {
+            lo_v = lo_v.min(root);
+            hi_v = hi_v.max(root);
+        }
+        let image = (mid.v - lo_v).max(hi_v - mid.v);
+        let eval = mid.e.max(lo.e).max(hi.e);
+        Val::Num(Num {
+            v: mid.v,
+            e: image + eval,
+        })
     }
 
     fn block(&mut self, fr: &mut Frame<'m>, b: &'m Block) -> Option<Val> {
@@ -282,7 +457,15 @@ impl<'m> Interp<'m> {
                     result,
                 } => {
                     let args = arguments.iter().map(|&a| self.expr(fr, a)).collect();
-                    let v = self.call(*function, args);
+                    let newton = self.module.functions[*function]
+                        .name
+                        .as_deref()
+                        .is_some_and(|n| n.ends_with(NEWTON_SUFFIX));
+                    let v = if newton {
+                        self.newton(*function, args)
+                    } else {
+                        self.call(*function, args)
+                    };
                     if let Some(r) = result {
                         fr.memo[r.index()] = Some(v);
                     }
@@ -445,7 +628,12 @@ impl<'m> Interp<'m> {
                         let alone = leaves == 2 && !self.in_sum[fr.fidx][h.index()];
                         self.lift(&[a, b], |_, xy| {
                             let y = if sub { neg(xy[1]) } else { xy[1] };
-                            if alone && sum_is_exact(xy[0], y) {
+                            let exact = round32_sum(xy[0].v, y.v)
+                                .filter(|&r| r == xy[0].v + y.v)
+                                .and_then(|r| exact_result(xy[0], y, r));
+                            if alone && let Some(r) = exact {
+                                r
+                            } else if alone && sum_is_exact(xy[0], y) {
                                 add_exact(xy[0], y)
                             } else {
                                 add_in(xy[0], y, span)
@@ -453,7 +641,17 @@ impl<'m> Interp<'m> {
                         })
                     }
                     B::Multiply if scalar(&a) && scalar(&b) => {
-                        let p = self.lift(&[a, b], |_, xy| mul(xy[0], xy[1]));
+                        // Two operands alone: no reassociation can split them.
+                        let alone = !self.in_product[fr.fidx][h.index()]
+                            && Self::product_leaves(fr, h) == 2;
+                        let p = self.lift(&[a, b], |_, xy| {
+                            if alone && let Some(p) = exact_result(xy[0], xy[1], xy[0].v * xy[1].v)
+                            {
+                                p
+                            } else {
+                                mul(xy[0], xy[1])
+                            }
+                        });
                         let hull = p.scalar().expect("a number");
                         self.check_product_chain(fr, h, hull);
                         p
@@ -488,7 +686,17 @@ impl<'m> Interp<'m> {
                                 .collect(),
                         )
                     }
-                    _ => self.binary(*op, a.collapsed(), b.collapsed()),
+                    _ => {
+                        let v = self.binary(*op, a.collapsed(), b.collapsed());
+                        match v {
+                            // A safeguard's comparison takes the form's branch
+                            // ([`FORM_BRANCHES`]).
+                            Val::Bool { v, .. } if fr.form_branches => {
+                                Val::Bool { v, stable: true }
+                            }
+                            v => v,
+                        }
+                    }
                 }
             }
             Expression::Select {
@@ -550,9 +758,23 @@ impl<'m> Interp<'m> {
                         vals.extend(arg1.map(|a| self.expr(fr, a)));
                         vals.extend(arg2.map(|a| self.expr(fr, a)));
                         let fun = *fun;
-                        self.lift(&vals, |s, n| {
-                            s.math(fun, n[0], n.get(1).copied(), n.get(2).copied())
-                        })
+                        // fma(2^k, u, c), out of every sum: one rounding of an exact product's
+                        // sum ([`fma_pow2`]).
+                        let pow2 = match vals[..] {
+                            [Val::Num(a), Val::Num(b), Val::Num(c)]
+                                if fun == MathFunction::Fma && !self.in_sum[fr.fidx][h.index()] =>
+                            {
+                                fma_pow2(a, b, c).or_else(|| fma_pow2(b, a, c))
+                            }
+                            _ => None,
+                        };
+                        if let Some(n) = pow2 {
+                            Val::Num(n)
+                        } else {
+                            self.lift(&vals, |s, n| {
+                                s.math(fun, n[0], n.get(1).copied(), n.get(2).copied())
+                            })
+                        }
                     }
                 }
             }
@@ -677,6 +899,13 @@ impl<'m> Interp<'m> {
             }
             _ => out.push(h),
         }
+    }
+
+    /// The number of leaves of the chain of products `h` heads.
+    fn product_leaves(fr: &Frame<'m>, h: Handle<Expression>) -> usize {
+        let mut leaves = Vec::new();
+        Self::chain_leaves(fr, h, true, &mut leaves);
+        leaves.len()
     }
 
     /// The sum of the magnitudes (with their errors) of the leaves of the sum `h` heads: no
@@ -917,6 +1146,7 @@ impl<'m> Interp<'m> {
                 }
             }
             M::Asin => self.asin(x),
+            M::Acos => self.acos(x),
             other => panic!("builtin {other:?} is not modelled"),
         }
     }
@@ -977,6 +1207,30 @@ impl<'m> Interp<'m> {
         }
     }
 
+    /// acos(x), inherited from `atan2(sqrt(1.0 - x * x), x)`: as [`Self::asin`] with the
+    /// arguments of atan2 swapped (atan2(s, x) for s >= 0 is monotone in each argument).
+    fn acos(&mut self, x: Num) -> Num {
+        if x.v.abs() > 1.0 {
+            self.exclude("acos of a value outside [-1, 1]");
+            return Num { v: 0.0, e: 0.0 };
+        }
+        let one = Num { v: 1.0, e: 0.0 };
+        let d = add(one, neg(mul(x, x)));
+        let s = self.sqrt(d);
+        let v = x.v.acos();
+        let s_lo = (s.v - s.e).max(0.0);
+        let mut e: f64 = 0.0;
+        for t in [s_lo, s.v + s.e] {
+            for y in [x.v - x.e, x.v + x.e] {
+                e = e.max((t.atan2(y) - v).abs());
+            }
+        }
+        Num {
+            v,
+            e: e + allow(v, e, 4096.0 + EXTRA),
+        }
+    }
+
     /// sqrt(x) as 1 / inverseSqrt(x): 2 ULP on the inverse root is a relative 2^-22, which
     /// the reciprocal keeps, at most 4 ULP of the root; then the division's 2.5 ULP and the
     /// extra half. At x = 0 the result's interval is [0, its ULP allowance].
@@ -1003,15 +1257,18 @@ struct Frame<'m> {
     memo: Vec<Option<Val>>,
     /// The function's index in the module (for [`Interp`]'s `in_sum`).
     fidx: usize,
+    /// Whether its comparisons take the form's branch ([`FORM_BRANCHES`]).
+    form_branches: bool,
 }
 
 /// Per expression of `f`: whether its value may become part of a longer sum an implementation
 /// could reorder. Only a value whose every use is an operand of `*` or `/`, a comparison, a
 /// condition or a builtin's argument (but `fma`'s addend) is kept out of every sum; any other
 /// use (an operand of `+` or `-`, `fma`'s addend, a negation, a vector's component, a select's
-/// value, a stored, passed or returned value, a conversion) may carry it into one, across
+/// value, a stored, passed or returned value (but to a Newton step's parameter that joins no
+/// chain there), a conversion) may carry it into one, across
 /// an inlined call too, and so does not let a difference count as exact.
-fn may_join_a_sum(f: &Function) -> Vec<bool> {
+fn may_join_a_sum(f: &Function, done: &[Vec<bool>], module: &Module) -> Vec<bool> {
     use BinaryOperator as B;
     let mut flag = vec![false; f.expressions.len()];
     for (_, e) in f.expressions.iter() {
@@ -1051,35 +1308,94 @@ fn may_join_a_sum(f: &Function) -> Vec<bool> {
             _ => {}
         }
     }
-    mark_statement_uses(&f.body, &mut flag);
+    mark_statement_uses(&f.body, &mut flag, done, module);
     flag
 }
 
-/// [`may_join_a_sum`]'s walk of the statements: stored, returned and passed values.
-fn mark_statement_uses(block: &Block, flag: &mut [bool]) {
+/// Per expression of `f`: whether its value may become part of a longer chain of products an
+/// implementation could reassociate: an operand of `*`, or any use that may carry it into one
+/// (as [`may_join_a_sum`]: a negation, a vector's component, a select's value, a stored,
+/// passed or returned value, a conversion). An operand of `+`, `-`, `/`, a comparison or a
+/// builtin's argument is not.
+fn may_join_a_product(f: &Function, done: &[Vec<bool>], module: &Module) -> Vec<bool> {
+    use BinaryOperator as B;
+    let mut flag = vec![false; f.expressions.len()];
+    for (_, e) in f.expressions.iter() {
+        let mut mark = |h: &Handle<Expression>| flag[h.index()] = true;
+        match e {
+            Expression::Binary {
+                op: B::Multiply,
+                left,
+                right,
+            } => {
+                mark(left);
+                mark(right);
+            }
+            Expression::Select { accept, reject, .. } => {
+                mark(accept);
+                mark(reject);
+            }
+            Expression::Compose { components, .. } => components.iter().for_each(&mut mark),
+            Expression::Unary { expr, .. } | Expression::As { expr, .. } => mark(expr),
+            Expression::AccessIndex { base, .. } | Expression::Access { base, .. } => mark(base),
+            Expression::Splat { value, .. } => mark(value),
+            Expression::Swizzle { vector, .. } => mark(vector),
+            _ => {}
+        }
+    }
+    mark_statement_uses(&f.body, &mut flag, done, module);
+    flag
+}
+
+/// [`may_join_a_sum`]'s walk of the statements: stored and returned values, and values passed
+/// to a function, except to a Newton step ([`NEWTON_SUFFIX`]) whose parameter joins no chain
+/// there (by `done`, the callees' flags; a callee not in `done` counts as joining).
+fn mark_statement_uses(block: &Block, flag: &mut [bool], done: &[Vec<bool>], module: &Module) {
     for st in block.iter() {
         match st {
             Statement::Store { value, .. } => flag[value.index()] = true,
             Statement::Return { value: Some(v) } => flag[v.index()] = true,
-            Statement::Call { arguments, .. } => {
-                for a in arguments {
-                    flag[a.index()] = true;
+            Statement::Call {
+                function,
+                arguments,
+                ..
+            } => {
+                let callee = &module.functions[*function];
+                for (i, a) in arguments.iter().enumerate() {
+                    // Followed into Newton steps only (erf^-1's q = 1 - |y|, a divisor
+                    // there): followed everywhere, the exact differences it finds tighten
+                    // diffuse::BurleyRenormalized::eval's bound below the distance between
+                    // its form (0) and the Rust kernel (2.4e-38) at a cosine of 2^-126.
+                    let newton = callee
+                        .name
+                        .as_deref()
+                        .is_some_and(|n| n.ends_with(NEWTON_SUFFIX));
+                    let joins = !newton
+                        || done.get(function.index()).is_none_or(|cf| {
+                            callee.expressions.iter().any(|(h, e)| {
+                                matches!(e, Expression::FunctionArgument(j) if *j as usize == i)
+                                    && cf[h.index()]
+                            })
+                        });
+                    if joins {
+                        flag[a.index()] = true;
+                    }
                 }
             }
-            Statement::Block(b) => mark_statement_uses(b, flag),
+            Statement::Block(b) => mark_statement_uses(b, flag, done, module),
             Statement::If { accept, reject, .. } => {
-                mark_statement_uses(accept, flag);
-                mark_statement_uses(reject, flag);
+                mark_statement_uses(accept, flag, done, module);
+                mark_statement_uses(reject, flag, done, module);
             }
             Statement::Loop {
                 body, continuing, ..
             } => {
-                mark_statement_uses(body, flag);
-                mark_statement_uses(continuing, flag);
+                mark_statement_uses(body, flag, done, module);
+                mark_statement_uses(continuing, flag, done, module);
             }
             Statement::Switch { cases, .. } => {
                 for c in cases {
-                    mark_statement_uses(&c.body, flag);
+                    mark_statement_uses(&c.body, flag, done, module);
                 }
             }
             _ => {}
@@ -1169,6 +1485,59 @@ fn power_of_two(n: Num) -> bool {
     let m = n.v.abs();
     // Normal as an f32 (a subnormal literal may be flushed to 0).
     n.e == 0.0 && m >= TINY && m.is_normal() && m.to_bits() & ((1u64 << 52) - 1) == 0
+}
+
+/// The exact result `r` (evaluated exactly in `f64`) of an operation on the exact operands `a`
+/// and `b`, where it is a normal `f32` (or 0): then every rounding mode, fused or not, returns
+/// it, so it carries no error. `None` otherwise.
+fn exact_result(a: Num, b: Num, r: f64) -> Option<Num> {
+    #[allow(clippy::cast_possible_truncation)]
+    let representable = f64::from(r as f32) == r && (r == 0.0 || r.abs() >= TINY);
+    (a.e == 0.0 && b.e == 0.0 && representable).then_some(Num { v: r, e: 0.0 })
+}
+
+/// The `f32` nearest the exact sum p + c of two `f64` (ties to even), or `None` where the
+/// `f64` sum rounds onto an `f32` midpoint (then the exact sum's side of it is not known here).
+/// Rounding to nearest is monotone and `f32` midpoints are `f64` numbers, so the `f64` sum
+/// lies on the exact sum's side of every midpoint it does not hit.
+fn round32_sum(p: f64, c: f64) -> Option<f64> {
+    let s = p + c;
+    let bb = s - p;
+    let err = (p - (s - bb)) + (c - bb);
+    #[allow(clippy::cast_possible_truncation)]
+    let r = f64::from(s as f32);
+    let tie = (s - r).abs() == 0.5 * ulp32(r.abs().min(s.abs()).max(TINY));
+    (err == 0.0 || !tie).then_some(r)
+}
+
+/// fma(k, u, c) with k an exact power of two and c exact: the product k u is exact (in `f64`
+/// too) for every u in its interval, so whether the implementation fuses or not the result is
+/// one rounding of k u + c, monotone in u: it lies between the roundings at the interval's
+/// ends. Where both ends round to the form's own `f32` value, that is exact: `2 u - 1` for u
+/// in [1/4, 1) by Sterbenz's lemma, wherever 2 u is a multiple of the result's ULP, and for a
+/// subnormal u (flushed or not, 2 u - 1 rounds to -1), so that `brdf_cos_sin_2pi`'s
+/// t = (2 u - 1) pi' keeps |t| <= pi' at u = 0 and u = 1 - 2^-24, where a charged rounding
+/// would push it past pi. Elsewhere the charge is the distance to the farther end's rounding
+/// (at most one ULP). `None` where the rule does not apply: an unfused k u may be subnormal
+/// (and flushed) at a normal u, or an end's sum lands on an `f32` midpoint. The caller checks
+/// that the value joins no longer sum that a reassociation could split.
+fn fma_pow2(k: Num, u: Num, c: Num) -> Option<Num> {
+    let (lo_u, hi_u) = (u.v - u.e, u.v + u.e);
+    let flushable = |t: f64| {
+        let p = (k.v * t).abs();
+        p != 0.0 && p < TINY
+    };
+    if !power_of_two(k) || c.e != 0.0 || ((flushable(lo_u) || flushable(hi_u)) && lo_u > 0.0) {
+        return None;
+    }
+    let lo = round32_sum(k.v * lo_u, c.v)?;
+    let hi = round32_sum(k.v * hi_u, c.v)?;
+    let v = k.v * u.v + c.v;
+    let e = (lo - v).abs().max((hi - v).abs());
+    Some(Num {
+        v,
+        e: e + flush(v, e),
+    })
 }
 
 fn mul(a: Num, b: Num) -> Num {
@@ -1388,5 +1757,180 @@ mod tests {
         assert_eq!((r[0].v, r[0].e), (1.0, 0.0));
         // 1.5 - 0.1: not within a factor of 2, rounded.
         assert!(i.run("f", &[3.0, 0.1]).unwrap()[0].e > 0.0);
+    }
+
+    /// The sampling family's module (erf^-1 and its Newton step).
+    fn sampling() -> Module {
+        let fams = crate::shaders::families();
+        let f = fams
+            .into_iter()
+            .find(|f| f.name == "sampling")
+            .expect("sampling");
+        f.module
+    }
+
+    #[test]
+    fn fma_of_a_power_of_two_is_exact_where_its_sum_is_an_f32() {
+        let m = module("fn f(u: f32) -> f32 { return fma(2.0, u, -1.0) * 0.5; }");
+        let mut i = Interp::new(&m);
+        // 2 u - 1 is an f32 for u in [1/4, 1) (Sterbenz), at u = 0, and for a subnormal u
+        // (2 u - 1 rounds to -1 whether u is flushed or not).
+        for u in [0.0, 0.25, 0.7, 0.999_999_94, 1.4e-45, 0.125] {
+            let u = f64::from(u as f32);
+            let r = i.run("f", &[u]).unwrap();
+            assert_eq!(r[0].e, 0.0, "u = {u}: {r:?}");
+        }
+        // 2^-30: -1 + 2^-29 is not an f32: one rounding, at most an ULP of the result.
+        let r = i.run("f", &[f64::powi(2.0, -30)]).unwrap();
+        assert!(r[0].e > 0.0 && r[0].e <= ulp32(0.5), "{r:?}");
+        // Inside a longer sum a reassociation may split it: charged.
+        let m = module("fn f(u: f32, z: f32) -> f32 { return (fma(2.0, u, -1.0) + z) * 0.5; }");
+        assert!(Interp::new(&m).run("f", &[0.75, 0.1]).unwrap()[0].e > 0.0);
+    }
+
+    #[test]
+    fn an_azimuth_at_u_0_stays_inside_sin_and_coss_domain() {
+        // (2 u - 1) pi' at u = 0 is -pi' exactly: inside [-pi, pi]; charged one rounding
+        // of 2 u - 1 it would leave it (pi - pi' is 1.5e-7, an ULP of 1 times pi 3.7e-7).
+        let m = module("fn f(u: f32) -> f32 { return cos(fma(2.0, u, -1.0) * 3.1415925); }");
+        let mut i = Interp::new(&m);
+        for u in [0.0, 1.4e-45, 0.999_999_94] {
+            assert!(i.run("f", &[u]).is_ok(), "u = {u}");
+        }
+    }
+
+    /// S(t) of erf^-1's Newton step at an exact t.
+    fn step_at(i: &mut Interp<'_>, t: f64, y: f64, q: f64) -> f64 {
+        i.run("brdf_erf_inv_newton", &[t, y, q]).unwrap()[0].v
+    }
+
+    #[test]
+    fn the_newton_rule_bounds_the_step_over_its_whole_interval() {
+        let m = sampling();
+        let mut i = Interp::new(&m);
+        for y in [-0.9, -0.3, 1e-3, 0.25, 0.5, 0.7, 0.99, 0.999_999] {
+            let y = f64::from(y as f32);
+            let q = 1.0 - y.abs();
+            let x0 = i.run("sampling_erf_inv", &[y]).unwrap()[0].v;
+            // Intervals straddling the root off-centre (whose image reaches down to the root
+            // between the ends' and the centre's images), centred on it, beside it.
+            for (c, e) in [
+                (x0, 1e-6),
+                (x0, 1e-3),
+                (x0 + 5e-3, 1e-2),
+                (x0 + 2e-3, 1e-3),
+                (x0 - 0.05, 0.02),
+            ] {
+                let r = i
+                    .newton_step("brdf_erf_inv_newton", Num { v: c, e }, &[y, q])
+                    .unwrap();
+                for k in 0..=2000 {
+                    let t = c - e + 2.0 * e * f64::from(k) / 2000.0;
+                    let s = step_at(&mut i, t, y, q);
+                    assert!(
+                        (s - r.v).abs() <= r.e,
+                        "y {y}, x in {c} +- {e}: S({t}) = {s} outside {} +- {}",
+                        r.v,
+                        r.e
+                    );
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn the_newton_rule_squares_the_incoming_error() {
+        let m = sampling();
+        let mut i = Interp::new(&m);
+        let y = f64::from(0.6f32);
+        let q = 1.0 - y;
+        let x = i.run("sampling_erf_inv", &[y]).unwrap()[0].v;
+        // 1e-3 in: Newton leaves about x 1e-6 (f'' / 2 f' = -x); operation by operation the
+        // error would pass through twice.
+        let r = i
+            .newton_step("brdf_erf_inv_newton", Num { v: x, e: 1e-3 }, &[y, q])
+            .unwrap();
+        assert!(r.e < 1e-5, "{r:?}");
+        // S'(x*) = 0: a first-order propagation would carry no error through the step, yet
+        // both ends of an interval centred on the root land on the same side of its image,
+        // K e^2 away; the rule's hull of the ends and the centre holds them (with the image
+        // dropped, the_newton_rule_bounds_the_step_over_its_whole_interval fails at y = -0.9).
+        let (lo, hi) = (
+            step_at(&mut i, x - 1e-3, y, q),
+            step_at(&mut i, x + 1e-3, y, q),
+        );
+        let root = step_at(&mut i, x, y, q);
+        assert!(
+            (lo - root) * (hi - root) > 0.0,
+            "the ends straddle the root's image: {lo} {root} {hi}"
+        );
+    }
+
+    #[test]
+    fn erf_inv_s_bound_holds_its_f64_kernel_and_stays_a_few_ulp() {
+        let m = sampling();
+        let mut i = Interp::new(&m);
+        let kernel = brdf_ref::KERNELS
+            .iter()
+            .find(|k| k.path == "sampling::erf_inv")
+            .expect("erf_inv's row");
+        // y over (-1, 1), and up to the last f32 below 1.
+        let grid = (1..2000).map(|k| f64::from(k) / 1000.0 - 1.0);
+        let ends = (1..=24).flat_map(|k| {
+            let y = 1.0 - f64::powi(2.0, -k);
+            [y, -y]
+        });
+        for y in grid.chain(ends) {
+            #[allow(clippy::cast_possible_truncation)]
+            let y = f64::from(y as f32);
+            let r = i.run("sampling_erf_inv", &[y]).unwrap()[0];
+            let mut out = [0.0];
+            (kernel.f64)(&[y], &mut out);
+            let want = out[0];
+            assert!(
+                (r.v - want).abs() <= r.e,
+                "y {y}: {} +- {} against {want}",
+                r.v,
+                r.e
+            );
+            // At y = 0 the result is 0 and its bound the flush allowance 2^-126.
+            assert!(
+                want == 0.0 || r.e <= 64.0 * ulp32(want),
+                "y {y}: bound {} ULP",
+                r.e / ulp32(want)
+            );
+        }
+    }
+
+    #[test]
+    fn a_value_passed_to_a_newton_step_joins_a_sum_only_where_the_step_adds_it() {
+        // 1.5 - 1 is exact alone; passed to a divisor it stays so, passed to a sum it does not.
+        let m = module(
+            "fn g_newton(q: f32) -> f32 { return 3.0 / q; }
+             fn h_newton(q: f32) -> f32 { return q + 0.3; }
+             fn f(x: f32, y: f32) -> f32 { return g_newton(x - y) * 2.0; }
+             fn k(x: f32, y: f32) -> f32 { return h_newton(x - y) * 2.0; }",
+        );
+        let mut i = Interp::new(&m);
+        // g's division of an exact 0.5, and h's sum of an exact 0.5: only their own roundings.
+        let exact_q = i.run("g_newton", &[0.5]).unwrap()[0];
+        assert_eq!(i.run("f", &[1.5, 1.0]).unwrap()[0].e, 2.0 * exact_q.e);
+        let exact_sum = i.run("h_newton", &[0.5]).unwrap()[0];
+        let r = i.run("k", &[1.5, 1.0]).unwrap()[0];
+        assert!(r.e > 2.0 * exact_sum.e, "{r:?} {exact_sum:?}");
+    }
+
+    #[test]
+    fn the_solves_safeguard_takes_the_forms_branch() {
+        // The comparison of the test above: uncertain, both operands outside the solve's
+        // helpers, the form's only inside them.
+        let body = "{ return select(0.0, 10.0, (b * 0.1) * 10.0 - 1.0 >= 0.0); }";
+        let m = module(&format!(
+            "fn f(b: f32) -> f32 {body} fn {FORM_BRANCHES}f(b: f32) -> f32 {body}"
+        ));
+        let mut i = Interp::new(&m);
+        assert!(i.run("f", &[1.0]).unwrap()[0].e >= 10.0);
+        let r = i.run(&format!("{FORM_BRANCHES}f"), &[1.0]).unwrap()[0];
+        assert_eq!((r.v, r.e), (10.0, 0.0));
     }
 }

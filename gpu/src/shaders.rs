@@ -369,12 +369,6 @@ pub const NO_TWIN: &[(&str, &str)] = &[
         "camera exposure from f64 settings, computed once on the CPU, not per pixel",
     ),
     (
-        "sampling::",
-        "not written yet: the Beckmann samplers (beckmann_vndf, beckmann_d_cos and \
-         beckmann_reflection need erf_inv, which has no twin; the cosine-hemisphere, GGX D cos, \
-         GGX visible-normal and GGX reflection samplers and the pdfs have twins)",
-    ),
-    (
         "ibl::prefilter::",
         "precomputation of prefiltered environment maps, run once per map, not per pixel",
     ),
@@ -395,11 +389,6 @@ pub const NO_TWIN: &[(&str, &str)] = &[
     (
         "ibl::energy::fresnel_avg_conductor",
         "a 32-point quadrature in f64, computed once per material on the CPU, not per pixel",
-    ),
-    (
-        "rough_dielectric::beckmann_sample",
-        "draws its facet normal with sampling::beckmann_vndf, whose erf_inv (a Newton \
-         polish) has no twin",
     ),
 ];
 
