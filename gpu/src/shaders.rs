@@ -387,6 +387,12 @@ pub const NO_TWIN: &[(&str, &str)] = &[
          ibl_energy_kulla_conty_lobe and ibl_energy_kulla_conty_fresnel)",
     ),
     (
+        "ibl::energy::kulla_conty_ggx_rgb",
+        "reads the built-in E and E_avg tables, as kulla_conty_ggx does, per colour channel (a \
+         shader samples them as textures and calls ibl_energy_kulla_conty_lobe and \
+         ibl_energy_kulla_conty_fresnel)",
+    ),
+    (
         "ibl::energy::fresnel_avg_conductor",
         "a 32-point quadrature in f64, computed once per material on the CPU, not per pixel",
     ),
