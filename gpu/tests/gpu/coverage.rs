@@ -28,7 +28,7 @@ fn every_kernel_a_shader_calls_has_a_twin_or_a_stated_reason() {
     assert!(
         TWINNED_MODULES
             .iter()
-            .all(|m| with.iter().any(|t| module_of(&t.kernel.path) == *m)),
+            .all(|m| with.iter().any(|t| module_of(t.kernel.path) == *m)),
         "a module of TWINNED_MODULES without any twin"
     );
     assert!(
