@@ -221,6 +221,31 @@ fn brdf_rough_dielectric_refract(wo: vec3<f32>, m: vec3<f32>, eta: f32) -> vec3<
     return brdf_rough_dielectric_normalize_or(wi, vec3<f32>(-n.x, -n.y, -n.z));
 }
 
+// The outputs of rough_dielectric_ggx_sample and rough_dielectric_beckmann_sample from the
+// chosen direction wi (a reflection where choose_r), its pdf p and G2 / G1 (ratio): a live
+// sample (a reflection that stays on wo's side, a refraction that crosses) with p > 0 keeps p
+// and its weight, ratio times the capped (1 / eta')^2 of a refraction in radiance transport;
+// any other keeps wi with pdf 0 and weight 0; eta = 1 is the Dirac pass-through.
+fn brdf_rough_dielectric_sample_out(
+    wo: vec3<f32>, wi: vec3<f32>, choose_r: bool, p: f32, ratio: f32, eta: f32, transport: u32,
+) -> array<f32, 5> {
+    let same = wo.z * wi.z > 0.0;
+    let cross = wo.z * wi.z < 0.0;
+    let live = (choose_r & same) | (!choose_r & cross);
+    // (1 / eta')^2 capped, as in brdf_rough_dielectric_jacobian.
+    let r = min(1.0 / select(eta, 1.0 / eta, wo.z < 0.0), BRDF_F32_MAX);
+    let rc = min(r, 18446742974197923840.0);
+    let s = select(select(rc * rc, BRDF_F32_MAX, r >= 18446744073709551616.0), 1.0,
+        transport == 1u);
+    let w = select(brdf_rough_dielectric_cap_mul(ratio, s), ratio, choose_r);
+    let keep = live & (p > 0.0);
+    // eta = 1: the Dirac pass-through.
+    let matched = (eta == 1.0) & !((wo.x == 0.0) & (wo.y == 0.0) & (wo.z == 0.0));
+    return array<f32, 5>(select(wi.x, -wo.x, matched), select(wi.y, -wo.y, matched),
+        select(wi.z, -wo.z, matched), select(select(0.0, p, keep), BRDF_F32_MAX, matched),
+        select(select(0.0, w, keep), 1.0, matched));
+}
+
 // Samples the rough dielectric BSDF of a GGX interface: (wi.x, wi.y, wi.z, pdf, weight) with
 // the visible normal m of sampling_ggx_vndf_spherical_cap for sign(wo.z) wo (Heitz 2018,
 // "Sampling the GGX Distribution of Visible Normals"; Dupuy and Benyoub 2023), the reflection
@@ -249,27 +274,12 @@ fn rough_dielectric_ggx_sample(
     // Reflection with probability F (1 under total internal reflection).
     let choose_r = uc0 < f_r;
     let wi = select(wt, wr, choose_r);
-    // A live sample: a reflection that stays on wo's side, a refraction that crosses.
-    let same = wo_z * wi.z > 0.0;
-    let cross = wo_z * wi.z < 0.0;
-    let live = (choose_r & same) | (!choose_r & cross);
     let p = rough_dielectric_pdf(0u, alpha_x, alpha_y, wo_x, wo_y, wo_z, wi.x, wi.y, wi.z, eta);
     let o = brdf_ggx_smith(alpha_x, alpha_y, wo);
     let i = brdf_ggx_smith(alpha_x, alpha_y, wi);
     // The floor keeps the unused branch finite where both cosines are 0.
     let ratio = i.x * (o.x + o.z) / max(i.x * o.z + o.x * i.z, 1.17549435e-38);
-    // (1 / eta')^2 capped, as in brdf_rough_dielectric_jacobian.
-    let r = min(1.0 / select(eta, 1.0 / eta, wo_z < 0.0), BRDF_F32_MAX);
-    let rc = min(r, 18446742974197923840.0);
-    let s = select(select(rc * rc, BRDF_F32_MAX, r >= 18446744073709551616.0), 1.0,
-        transport == 1u);
-    let w = select(brdf_rough_dielectric_cap_mul(ratio, s), ratio, choose_r);
-    let keep = live & (p > 0.0);
-    // eta = 1: the Dirac pass-through.
-    let matched = (eta == 1.0) & !((wo_x == 0.0) & (wo_y == 0.0) & (wo_z == 0.0));
-    return array<f32, 5>(select(wi.x, -wo_x, matched), select(wi.y, -wo_y, matched),
-        select(wi.z, -wo_z, matched), select(select(0.0, p, keep), BRDF_F32_MAX, matched),
-        select(select(0.0, w, keep), 1.0, matched));
+    return brdf_rough_dielectric_sample_out(wo, wi, choose_r, p, ratio, eta, transport);
 }
 
 // rough_dielectric_ggx_sample for a Beckmann interface: the visible normal m of
@@ -294,10 +304,6 @@ fn rough_dielectric_beckmann_sample(
     // Reflection with probability F (1 under total internal reflection).
     let choose_r = uc0 < f_r;
     let wi = select(wt, wr, choose_r);
-    // A live sample: a reflection that stays on wo's side, a refraction that crosses.
-    let same = wo_z * wi.z > 0.0;
-    let cross = wo_z * wi.z < 0.0;
-    let live = (choose_r & same) | (!choose_r & cross);
     let p = rough_dielectric_pdf(1u, alpha_x, alpha_y, wo_x, wo_y, wo_z, wi.x, wi.y, wi.z, eta);
     let o = brdf_beckmann_smith(alpha_x, alpha_y, wo);
     let i = brdf_beckmann_smith(alpha_x, alpha_y, wi);
@@ -305,16 +311,5 @@ fn rough_dielectric_beckmann_sample(
     let den = o.x * i.x + i.x * lo + o.x * brdf_beckmann_cos_lambda(i);
     // The floor keeps the unused branch finite where both cosines are 0.
     let ratio = i.x * (o.x + lo) / max(den, 1.17549435e-38);
-    // (1 / eta')^2 capped, as in brdf_rough_dielectric_jacobian.
-    let r = min(1.0 / select(eta, 1.0 / eta, wo_z < 0.0), BRDF_F32_MAX);
-    let rc = min(r, 18446742974197923840.0);
-    let s = select(select(rc * rc, BRDF_F32_MAX, r >= 18446744073709551616.0), 1.0,
-        transport == 1u);
-    let w = select(brdf_rough_dielectric_cap_mul(ratio, s), ratio, choose_r);
-    let keep = live & (p > 0.0);
-    // eta = 1: the Dirac pass-through.
-    let matched = (eta == 1.0) & !((wo_x == 0.0) & (wo_y == 0.0) & (wo_z == 0.0));
-    return array<f32, 5>(select(wi.x, -wo_x, matched), select(wi.y, -wo_y, matched),
-        select(wi.z, -wo_z, matched), select(select(0.0, p, keep), BRDF_F32_MAX, matched),
-        select(select(0.0, w, keep), 1.0, matched));
+    return brdf_rough_dielectric_sample_out(wo, wi, choose_r, p, ratio, eta, transport);
 }
