@@ -331,35 +331,40 @@ pub fn ggx_conductor_rgb_fast<T: Real>(
 /// with [`crate::ggx::Ggx`] (D of the normalized h in double words, V from the vectors'
 /// components) on unit directions (2.4e-15 found).
 ///
-/// On `f32` and `f32x8` the same function is evaluated in f64 (`f32x8` as two `f64x4` halves, lane
-/// for lane the scalar operations) and rounded to f32 once (a result below f32's smallest normal
-/// number from normal numbers, as [`fresnel::conductor`]'s), in a form with fewer roots and
-/// divisions. F depends on the directions only through c = x / sqrt(y) with x = wo.s and y = |s|^2,
-/// and is unchanged when (x, y) is scaled to (r x, r^2 y): with z = N^2 - sin^2 = u + c^2
-/// (u = N^2 - 1), y z = u y + x^2 is a polynomial, |c + s|^2 y, (A + B) y^2 and A y^2 of
+/// On `f32` and `f32x8` the same function is evaluated in f64 (`f32x8` as one `f64x8`: one
+/// AVX-512 register where the target has them, two `f64x4` otherwise; lane for lane the scalar
+/// operations) and rounded to f32 once (a result below f32's smallest normal number from normal
+/// numbers, as [`fresnel::conductor`]'s), in a form with fewer roots and divisions. F depends on
+/// the directions only through c = x / sqrt(y) with x = wo.s and y = |s|^2, and is unchanged
+/// when (x, y) is scaled to (r x, r^2 y): with z = N^2 - sin^2 = u + c^2 (u = N^2 - 1),
+/// y z = u y + x^2 is a polynomial, |c + s|^2 y, (A + B) y^2 and A y^2 of
 /// [`fresnel::conductor`]'s form are polynomials in x, y, |y z| and sqrt(y (|z| + |Re z|)), so that
 /// F = num / (p^2 q) takes two square roots (|y z| and sqrt(|y z| + |Re y z|)) and neither |s| nor
 /// the quotient wo.s / |s|. r is the bit-pattern seed of 1 / sqrt(y), which puts y within 7 % of 1
-/// and every magnitude where it was with c in [0, 1]. F's quotient is folded into D V's:
+/// and every magnitude where it was with c in [0, 1]. Re(u) enters y z as the exact unevaluated
+/// sum of eta^2 - k^2 - 1 (two error-free additions; the squares of f32 inputs are exact), so that
+/// Re(N^2) is kept where |N| is below 2^-27 and Re(u) alone would round to -1 (at normal
+/// incidence y z would then be 0 and F 0 / 0). F's quotient is folded into D V's:
 /// f = (num alpha^2 |s|^4 g) / (2 pi p^2 q t^2 den g), g the square of the bit-pattern seed of
-/// 1 / sqrt(t^2 den), which keeps both products inside f64's normal range. V's two roots take an
-/// f32 reciprocal root (correctly rounded f32 `sqrt` and division, the same bits on every target)
-/// and one Newton step in f64 (within 4e-14 relative). Error budget before the rounding to f32: the
-/// two roundings of r move c by 2^-52; F's polynomials, roots and products about thirty roundings
-/// of 2^-53; D V about twenty, V's roots 4e-14 each; together below 1e-13 relative, 2e-6 of an f32
-/// ULP beside the rounding's 0.5: within 1 ULP of the f64 tier on the same directions (0.500 found
-/// over 40 x 200 000 random directions and parameters, seeds 1 to 40, and 0.5000 on an edge grid of
-/// grazing, opposite and equal directions, alpha near both clamps, eta and k from 2^-126 to
-/// f32::MAX and eta within 2^-20 of 1, where F is well conditioned; `BRDF_TEST_SEED=<n> cargo test
-/// --all-features --test cook_torrance local:: -- --nocapture`).
+/// 1 / sqrt(t^2 den), which keeps both products inside f64's normal range; V's two roots are
+/// correctly rounded f64 square roots. Error budget before the rounding to f32: the two
+/// roundings of r move c by 2^-52; F's polynomials, roots and products about thirty roundings
+/// of 2^-53; D V about twenty; together below 1e-13 relative, 2e-6 of an f32 ULP beside the
+/// rounding's 0.5: within 1 ULP of the f64 tier on the same directions (0.500 found over
+/// 40 x 200 000 random directions and parameters, seeds 1 to 40, default and
+/// `-C target-cpu=native` builds, and 0.5000 on an edge grid of grazing, opposite and equal
+/// directions, alpha near both clamps, eta and k from 2^-126 to f32::MAX and eta within 2^-20
+/// of 1, where F is well conditioned; `BRDF_TEST_SEED=<n> cargo test --all-features --test
+/// cook_torrance local:: -- --nocapture`). A NaN or infinite component makes |s|^2 NaN or
+/// infinite, which the f64 evaluation maps to NaN.
 ///
 /// Run time on `f32x8` (a Zen 4 core, `-C target-cpu=native`, `bench/mitsuba/compare.py
-/// --n 1000000`, one interleaved run, load average 6.7 on 2 cores): 5.44 ms per 10^6
-/// hemisphere direction pairs times n.l, 2.64 times Mitsuba 3's LLVM back end on the same
-/// pairs (2.06 ms, whose f32 arithmetic is 21 ULP off where this is 1.5), where the form
-/// with |s|, the quotient wo.s / |s| and three divisions took 3.15 times. F's two nested
-/// roots and the one division lie one after the other on its longest chain of dependent
-/// operations. More in `bench/mitsuba/README.md`.
+/// --n 1000000`, one interleaved run, load average 0.7 on 2 cores): 3.52 ms per 10^6
+/// hemisphere direction pairs times n.l, 1.76 times Mitsuba 3's LLVM back end on the same
+/// pairs (2.00 ms, whose f32 arithmetic is 21 ULP off where this is 1.5). Two `f64x4` halves
+/// with V's roots from f32 seeds (an f32 square root and division, then a Newton step) took
+/// 2.65 times; on this core the `f64x8` square roots cost less than those seeds with their
+/// conversions between 512- and 256-bit registers. More in `bench/mitsuba/README.md`.
 ///
 /// Sources: as [`ggx_conductor_rgb`]; the half-vector form of D as Mitsuba 3's
 /// `MicrofacetDistribution::eval` (`include/mitsuba/render/microfacet.h`).
@@ -369,12 +374,11 @@ pub fn ggx_conductor_rgb_fast<T: Real>(
 pub fn ggx_conductor_local<T: Real>(wo: V3<T>, wi: V3<T>, alpha: Alpha<T>, eta: T, k: T) -> T {
     let a = crate::microfacet::clamp_alpha(alpha.0);
     let x = [wo.x, wo.y, wo.z, wi.x, wi.y, wi.z, a, eta, k];
+    // NaN components give NaN inside (`ConductorLocal`); the parameters are checked here, once
+    // for a loop with fixed parameters.
     let value = T::via_f64(x, ConductorLocal, crate::real::sealed::Token::NEW);
-    // 0 x is 0 for every finite x (no subnormal, no overflow), NaN for NaN and infinities.
-    let probe = [wo.x, wo.y, wo.z, wi.x, wi.y, wi.z]
-        .into_iter()
-        .fold(T::ZERO, |acc, x| x.mul_add(T::ZERO, acc));
-    local_guards(probe, a, eta, k, value)
+    let ok = fresnel::valid_eta(eta) & k.simd_ge(T::ZERO) & k.simd_le(T::MAX) & !a.is_nan();
+    crate::domain::nan_unless(ok, value)
 }
 
 /// NaN where [`ggx_conductor_local`]'s and [`ggx_conductor_local_fast`]'s inputs are out of
@@ -421,27 +425,64 @@ impl crate::real::sealed::Widened<9> for ConductorLocal {
         );
         let f = fresnel::conductor(v_dot_h, eta, k);
         let above = vz.simd_gt(T::ZERO) & lz.simd_gt(T::ZERO);
-        T::select(above, dv * f, T::ZERO)
+        // |s|^2 is finite exactly where every component is (for components below 1e150).
+        crate::domain::nan_unless(ss.simd_le(T::MAX), T::select(above, dv * f, T::ZERO))
+    }
+
+    /// The value before its rounding (`single` and `lanes8` below round it with
+    /// `crate::widen`'s subnormal-safe rounding).
+    #[inline]
+    fn wide<W: Real<Scalar = f64>>(self, x: [W; 9]) -> W {
+        Self::value(x)
     }
 
     #[inline]
-    fn wide<W: Real<Scalar = f64>>(self, [vx, vy, vz, lx, ly, lz, a, eta, k]: [W; 9]) -> W {
+    fn single(self, x: [f32; 9]) -> f32 {
+        let v = Self::value(x.map(f64::from));
+        crate::widen::join_tiny_f32(
+            crate::widen::tiny_big(v, 1.0),
+            crate::widen::tiny_small(v, 1.0),
+        )
+    }
+
+    /// All eight lanes as one `f64x8` (one AVX-512 register where the target has them):
+    /// half the instructions of two `f64x4` halves, and V's f32 seeds as one `f32x8`
+    /// square root and division; the same operations lane for lane.
+    #[inline]
+    fn lanes8(self, x: [crate::wide::f32x8; 9]) -> crate::wide::f32x8 {
+        let v = Self::value(x.map(crate::widen::widen8));
+        let one = crate::wide::f64x8::splat(1.0);
+        crate::widen::join_tiny_f32x8(
+            crate::widen::tiny_big(v, one),
+            crate::widen::tiny_small(v, one),
+        )
+    }
+}
+
+#[cfg(feature = "ggx")]
+impl ConductorLocal {
+    /// D V F in f64 from f32 inputs widened exactly, on `f64`, `f64x4` and `f64x8` alike.
+    #[inline]
+    fn value<W: crate::widen::F64Ops>([vx, vy, vz, lx, ly, lz, a, eta, k]: [W; 9]) -> W {
         // Sums of two f32 components and their squares carry a rounding of 2^-53 at most; no
         // intermediate leaves f64's normal range for f32 inputs (|s| >= 2^-149 where it is not
         // 0). The cap at f32's largest finite value keeps D V F finite after the rounding.
         // The longest chain of dependent operations runs through F's two nested roots (on
         // `vsqrtpd`) and the one division; everything else is arranged beside it.
-        let (wo, wi) = (V3::new(vx, vy, vz), V3::new(lx, ly, lz));
-        let s = wo + wi;
-        let (sxy, ss) = local_sums(s);
-        let (f_num, f_p, f_q) = fresnel::ConductorWide::new(eta, k).of_projection(wo.dot(s), ss);
-        // V's two roots from f32 seeds (`sqrt_by_f32`; their argument
-        // alpha^2 (1 - c^2) + c^2 lies in [1e-8, 1e8] for the clamped alpha).
+        let zero = W::splat(0.0);
+        let one = W::splat(1.0);
+        let s = [vx + lx, vy + ly, vz + lz];
+        let sxy = s[0].mul_add(s[0], s[1] * s[1]);
+        let ss = s[2].mul_add(s[2], sxy);
+        let wo_s = vx.mul_add(s[0], vy.mul_add(s[1], vz * s[2]));
+        let (f_num, f_p, f_q) = fresnel::ConductorWide::new(eta, k).of_projection(wo_s, ss);
+        // V's two roots, correctly rounded (their argument alpha^2 (1 - c^2) + c^2 lies in
+        // [1e-8, 1e8] for the clamped alpha).
         let cap = W::splat(f64::from(f32::MAX));
-        let (cv, cl) = (vz.saturate(), lz.saturate());
+        let (cv, cl) = (vz.max(zero).min(one), lz.max(zero).min(one));
         let a2 = a * a;
-        let t = a2.mul_add(s.z * s.z, sxy);
-        let root = |c: W| sqrt_by_f32(a2.mul_add(crate::microfacet::sin2_working(c), c * c));
+        let t = a2.mul_add(s[2] * s[2], sxy);
+        let root = |c: W| a2.mul_add(sin2_lanes(c), c * c).sqrt();
         let den = cl.mul_add(root(cv), cv * root(cl));
         let num = (a2 * W::splat(0.5 * core::f64::consts::FRAC_1_PI)) * (ss * ss);
         // D V = num / dv_den lies in [2^-50, 2^243] for f32 inputs, dv_den in [2^-812, 2^75]:
@@ -451,36 +492,43 @@ impl crate::real::sealed::Widened<9> for ConductorLocal {
         // 2^780 only for |N| so large that F is near 1, where D V F above f32::MAX is capped
         // as it should be). The floor keeps 0 / 0 out where t^2 den underflows (it does not
         // for f32 inputs).
-        let dv_den = ((t * t) * den).max(W::MIN_POSITIVE);
-        let g = dv_den.rsqrt_bits(crate::real::sealed::Token::NEW);
+        let dv_den = ((t * t) * den).max(W::splat(f64::MIN_POSITIVE));
+        let g = dv_den.rsqrt_bits();
         let g2 = g * g;
         let value = (((num * g2) * f_num) / ((f_p * f_p) * (f_q * (dv_den * g2)))).min(cap);
-        let above = vz.simd_gt(W::ZERO) & lz.simd_gt(W::ZERO);
-        W::select(above, value, W::ZERO)
+        let above = vz.gt(zero) & lz.gt(zero);
+        // |s|^2 is finite exactly where every component is (f32 components: no overflow).
+        W::select(
+            W::splat(f64::MAX).ge(ss),
+            W::select(above, value, zero),
+            W::splat(f64::NAN),
+        )
     }
 }
 
-/// sqrt(x) for x in [2^-100, 2^100] on f64 lanes (f64, f64x4), within 4e-14 relative: the
-/// f32 reciprocal root y0 = 1 / sqrt(fl32(x)) (two correctly rounded f32 operations, the
-/// same bits on every target and lane type; within 1.3 2^-23 of 1 / sqrt(x)), then one
-/// Newton step in f64, s0 = x y0, sqrt(x) = s0 + y0 (x - s0^2) / 2, which leaves
-/// -1.5 (y0 sqrt(x) - 1)^2 and a few roundings of 2^-53. Four f32 lanes of root and quotient
-/// take the divider for less time than four f64 lanes of one root, and three f64 operations
-/// follow, where `crate::widen::sqrt` takes thirteen (`sqrt_by_f32_is_within_its_stated_error`).
+/// 1 - c^2 as `crate::microfacet::sin2_working` forms it, on f64 lanes.
 #[cfg(feature = "ggx")]
 #[inline]
-fn sqrt_by_f32<W: Real<Scalar = f64>>(x: W) -> W {
-    let mut lanes = [1.0f32; 4];
-    for (i, lane) in lanes.iter_mut().enumerate().take(W::LANES) {
-        #[allow(clippy::cast_possible_truncation)] // the rounding to f32 is the seed
-        {
-            *lane = x.lane(i) as f32;
-        }
+fn sin2_lanes<W: crate::widen::F64Ops>(c: W) -> W {
+    #[cfg(any(
+        target_feature = "fma",
+        all(target_arch = "aarch64", target_feature = "neon")
+    ))]
+    {
+        (-c).mul_add(c, W::splat(1.0))
     }
-    let y0 = (wide::f32x4::ONE / wide::f32x4::new(lanes).sqrt()).to_array();
-    let y0 = W::from_fn(|i| f64::from(y0[i]));
-    let s0 = x * y0;
-    (y0 * W::HALF).mul_add((-s0).mul_add(s0, x), s0)
+    #[cfg(not(any(
+        target_feature = "fma",
+        all(target_arch = "aarch64", target_feature = "neon")
+    )))]
+    {
+        let one = W::splat(1.0);
+        W::select(
+            W::splat(0.5).gt(c),
+            (-c).mul_add(c, one),
+            (one - c) * (one + c),
+        )
+    }
 }
 
 /// s_x^2 + s_y^2 and |s|^2.
@@ -755,38 +803,4 @@ pub fn beckmann_dielectric<T: Real>(c: Cosines<T>, alpha: Alpha<T>, eta: T) -> T
     let f = fresnel::dielectric(c.v_dot_h.saturate(), eta);
     let dv = beckmann_dv(c, alpha);
     assemble(dv, c, alpha, f)
-}
-
-#[cfg(all(test, feature = "ggx"))]
-mod tests {
-    use super::sqrt_by_f32;
-
-    /// `sqrt_by_f32` within its stated 4e-14 (relative, from below, to a few roundings of
-    /// 2^-53) of the correctly rounded f64 root over [2^-100, 2^100] (a geometric sweep of
-    /// about 10^7 points, and the powers of two with their neighbours), lanes equal to the
-    /// scalar.
-    #[test]
-    fn sqrt_by_f32_is_within_its_stated_error() {
-        let mut worst = 0.0f64;
-        let mut check = |x: f64| {
-            let got = sqrt_by_f32(x);
-            let rel = got / x.sqrt() - 1.0;
-            assert!(rel.abs() <= 4e-14 && rel <= 4e-16, "sqrt({x:e}): {rel:e}");
-            let lanes = sqrt_by_f32(crate::wide::f64x4::splat(x)).to_array();
-            assert!(lanes.iter().all(|l| l.to_bits() == got.to_bits()), "{x:e}");
-            worst = worst.max(rel.abs());
-        };
-        let mut x = libm::exp2(-100.0);
-        while x < libm::exp2(100.0) {
-            check(x);
-            x *= 1.000_013_7;
-        }
-        for e in -100..=100 {
-            let p = libm::exp2(f64::from(e));
-            for q in [p, p * (1.0 + f64::EPSILON), p * (1.0 - f64::EPSILON / 2.0)] {
-                check(q);
-            }
-        }
-        assert!(worst <= 4e-14, "{worst:e}");
-    }
 }

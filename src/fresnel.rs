@@ -697,11 +697,11 @@ impl crate::real::sealed::Widened<3> for Conductor {
 /// [`ConductorWide`]'s 2 Re(s) = h / w, which keeps w^3 and the ratio's denominator (up to
 /// |N|^9) below 2^900.
 #[inline]
-fn big_root_scale<W: Real<Scalar = f64>>(norm: W) -> W {
+fn big_root_scale<W: crate::widen::F64Ops>(norm: W) -> W {
     W::select(
-        norm.simd_gt(W::splat(1.606_938_044_258_990_3e60)),
+        norm.gt(W::splat(1.606_938_044_258_990_3e60)),
         W::splat(7.888_609_052_210_118e-31),
-        W::ONE,
+        W::splat(1.0),
     )
 }
 
@@ -719,23 +719,112 @@ pub(crate) struct ConductorWide<W> {
     pub(crate) b: W,
     /// |N^2 - 1|^2.
     u_abs2: W,
+    /// Re(N^2) - 1 = eta^2 - k^2 - 1 as an unevaluated sum u_hi + u_lo (to 2^-106 relative):
+    /// u_re loses Re(N^2) entirely where |N| is below about 2^-27 (`of_projection`).
+    #[cfg_attr(not(all(feature = "ggx", feature = "cook-torrance")), allow(dead_code))]
+    u_hi: W,
+    #[cfg_attr(not(all(feature = "ggx", feature = "cook-torrance")), allow(dead_code))]
+    u_lo: W,
 }
 
-impl<W: Real<Scalar = f64>> ConductorWide<W> {
+impl<W: crate::widen::F64Ops> ConductorWide<W> {
     #[inline]
     pub(crate) fn new(eta: W, k: W) -> Self {
+        let one = W::splat(1.0);
         let k2 = k * k;
         let n2_re = eta.mul_add(eta, -k2);
-        let u_re = (eta - W::ONE).mul_add(eta + W::ONE, -k2);
-        let u_im = W::TWO * eta * k;
+        let u_re = (eta - one).mul_add(eta + one, -k2);
+        let u_im = W::splat(2.0) * eta * k;
+        // eta^2 and k^2 are exact for f32 inputs; two error-free sums (Knuth's TwoSum) give
+        // eta^2 - k^2 - 1 = u_hi + e1 + e2 exactly.
+        let two_sum = |a: W, b: W| {
+            let s = a + b;
+            let bv = s - a;
+            (s, (a - (s - bv)) + (b - bv))
+        };
+        let (s1, e1) = two_sum(eta * eta, -k2);
+        let (u_hi, e2) = two_sum(s1, -one);
+        let u_lo = e1 + e2;
         Self {
             n2_re,
             u_re,
             b: u_im.abs(),
             u_abs2: u_re.mul_add(u_re, u_im * u_im),
+            u_hi,
+            u_lo,
         }
     }
 
+    /// F at the cosine c = x / sqrt(y) (saturated to [0, 1]) without forming c: from x = wo.s
+    /// and y = |s|^2 of the unnormalized half vector s = wo + wi (`cook_torrance`'s exact rough
+    /// conductor), as F = num / (p^2 q) with (num, p, q) returned, all positive, so that the
+    /// caller can fold the one division into its own.
+    #[cfg(all(feature = "ggx", feature = "cook-torrance"))]
+    #[inline]
+    pub(crate) fn of_projection(self, x: W, y: W) -> (W, W, W) {
+        // F depends on c alone, and c on x / sqrt(y): (x, y) may be scaled by (r, r^2) for any
+        // r > 0. r = the bit-pattern seed of 1 / sqrt(y) (within 3.5 %) puts y within 7 % of
+        // 1, so that every magnitude below is that of `ratio` with c in [0, 1]; its two
+        // roundings move c by 2^-52 at most. Saturation: x >= 0 and x^2 <= y (y := max(y,
+        // x^2), which is c = 1 where c would exceed 1).
+        let x = x.max(W::splat(0.0));
+        let r = y.rsqrt_bits();
+        let (x, y) = (x * r, y * (r * r));
+        let x2 = x * x;
+        let y = y.max(x2);
+        // In units of y: s2 y = y - x^2 (exact: Sterbenz), z y = u y + x^2 with Re(u) the
+        // exact sum u_hi + u_lo (each multiply-add rounds its own result once, so nothing
+        // cancels). The rounding of y and that of x^2 (2^-53 of y each) are those of c^2
+        // itself, which `ratio`'s second form N^2 - s2 cannot undo either: c is a rounded
+        // quotient there.
+        let s2 = y - x2;
+        let z_re = self.u_lo.mul_add(y, self.u_hi.mul_add(y, x2));
+        // |Im z y|^2 = b^2 y^2 and lambda |Im z y| = (lambda b) y from factors of eta and k
+        // alone: lambda = 2^-100 where |u|^2 > 2^400 (|N| above about 2^100), else 1, chosen
+        // from |u| rather than from |z y| (within 8 % of |u| there, y being within 7 % of 1)
+        // so that a loop with fixed eta and k computes it once.
+        let lambda = W::select(
+            self.u_abs2.gt(W::splat(2.582_249_878_086_908_6e120)),
+            W::splat(7.888_609_052_210_118e-31),
+            W::splat(1.0),
+        );
+        let yy = y * y;
+        let norm = z_re.mul_add(z_re, (self.b * self.b) * yy).sqrt();
+        let t = (norm + z_re.abs()).sqrt();
+        // As `ratio` with c^2 |s|^2 -> x^2 |z y|, s2 -> s2 y, c 2 Re(s) -> x h / w (the powers
+        // of y cancel between 2 Re(s) = h / w and c = x / sqrt(y)): the terms of A, A + B and
+        // |c + s|^2 gain the factors y^2, y^2 and y, so F = |u|^2 y^2 A w^3 / (p^2 q) with
+        // p = |c + s|^2 y w and q = (A + B) y^2 w. Both p and q are linear in t, their
+        // coefficients known before the second root: where Re z >= 0 (h = sqrt(2) t, w = 1)
+        // p = (x^2 + |z y|) + sqrt(2) x t, q = A y^2 + sqrt(2) x s2 t; elsewhere (h = sqrt(2)
+        // |Im z y|, w = t) p = (x^2 + |z y|) t + sqrt(2) x |Im z y| and q = A y^2 t + sqrt(2)
+        // x s2 |Im z y|, there with lambda t and lambda |Im z y| in place of t and |Im z y|,
+        // which keeps w^3 and p^2 q (up to |N|^9) below 2^900.
+        let pos = z_re.ge(W::splat(0.0));
+        let xr = W::splat(core::f64::consts::SQRT_2) * x;
+        let e = x2 + norm;
+        let a_par = x2.mul_add(norm, s2 * s2);
+        let xs = xr * s2;
+        let im = (lambda * self.b) * y;
+        let tl = t * lambda;
+        let tt = W::select(pos, t, tl);
+        let p = W::select(pos, xr, e).mul_add(tt, W::select(pos, e, xr * im));
+        let q = W::select(pos, xs, a_par).mul_add(tt, W::select(pos, a_par, xs * im));
+        let w3 = W::select(pos, W::splat(1.0), tl * tl * tl);
+        let num = (self.u_abs2 * yy) * (a_par * w3);
+        // At c = 0 the ratio is 1 only to rounding: 1, or 0 without an interface (N = 1).
+        let no_interface = self.u_abs2.eq(W::splat(0.0));
+        let grazing = W::select(no_interface, W::splat(0.0), W::splat(1.0));
+        let inside = x.gt(W::splat(0.0));
+        (
+            W::select(inside, num, grazing),
+            W::select(inside, p, W::splat(1.0)),
+            W::select(inside, q, W::splat(1.0)),
+        )
+    }
+}
+
+impl<W: Real<Scalar = f64>> ConductorWide<W> {
     /// F from the cosine c in [0, 1], Re z (its sign only), |z| and t = sqrt(|z| + |Re z|).
     #[inline]
     pub(crate) fn ratio(self, c: W, z_re: W, norm: W, t: W) -> W {
@@ -772,63 +861,6 @@ impl<W: Real<Scalar = f64>> ConductorWide<W> {
         let no_interface = self.u_abs2.simd_eq(W::ZERO);
         let grazing = W::select(no_interface, W::ZERO, W::ONE);
         W::select(c.simd_gt(W::ZERO), ratio.min(W::ONE), grazing)
-    }
-
-    /// F at the cosine c = x / sqrt(y) (saturated to [0, 1]) without forming c: from x = wo.s
-    /// and y = |s|^2 of the unnormalized half vector s = wo + wi (`cook_torrance`'s exact rough
-    /// conductor), as F = num / (p^2 q) with (num, p, q) returned, all positive, so that the
-    /// caller can fold the one division into its own.
-    #[cfg(all(feature = "ggx", feature = "cook-torrance"))]
-    #[inline]
-    pub(crate) fn of_projection(self, x: W, y: W) -> (W, W, W) {
-        // F depends on c alone, and c on x / sqrt(y): (x, y) may be scaled by (r, r^2) for any
-        // r > 0. r = the bit-pattern seed of 1 / sqrt(y) (within 3.5 %) puts y within 7 % of
-        // 1, so that every magnitude below is that of `ratio` with c in [0, 1]; its two
-        // roundings move c by 2^-52 at most. Saturation: x >= 0 and x^2 <= y (y := max(y,
-        // x^2), which is c = 1 where c would exceed 1).
-        let x = x.max(W::ZERO);
-        let r = y.rsqrt_bits(crate::real::sealed::Token::NEW);
-        let (x, y) = (x * r, y * (r * r));
-        let x2 = x * x;
-        let y = y.max(x2);
-        // In units of y: s2 y = y - x^2 (exact: Sterbenz), z y = u y + x^2. Its rounding and
-        // that of x^2 (2^-53 of y each) are those of c^2 itself, which `ratio`'s second form
-        // N^2 - s2 cannot undo either: c is a rounded quotient there.
-        let s2 = y - x2;
-        let z_re = self.u_re.mul_add(y, x2);
-        let z_im = self.b * y;
-        let norm = z_re.mul_add(z_re, z_im * z_im).sqrt();
-        let t = (norm + z_re.abs()).sqrt();
-        // As `ratio` with c^2 |s|^2 -> x^2 |z y|, s2 -> s2 y, c 2 Re(s) -> x h / w (the powers
-        // of y cancel between 2 Re(s) = h / w and c = x / sqrt(y)): the terms of A, A + B and
-        // |c + s|^2 gain the factors y^2, y^2 and y, so F = |u|^2 y^2 A w^3 / (p^2 q) with
-        // p = |c + s|^2 y w and q = (A + B) y^2 w. Both p and q are linear in t, their
-        // coefficients known before the second root: where Re z >= 0 (h = sqrt(2) t, w = 1)
-        // p = (x^2 + |z y|) + sqrt(2) x t, q = A y^2 + sqrt(2) x s2 t; elsewhere (h = sqrt(2)
-        // |Im z y|, w = t) p = (x^2 + |z y|) t + sqrt(2) x |Im z y| and q = A y^2 t + sqrt(2)
-        // x s2 |Im z y|, there times lambda = 2^-100 where |z y| > 2^200 (|N| above about
-        // 2^100), which keeps w^3 and p^2 q (up to |N|^9) below 2^900.
-        let pos = z_re.simd_ge(W::ZERO);
-        let lambda = big_root_scale(norm);
-        let xr = W::splat(core::f64::consts::SQRT_2) * x;
-        let e = x2 + norm;
-        let a_par = x2.mul_add(norm, s2 * s2);
-        let xs = xr * s2;
-        let im = z_im * lambda;
-        let p = W::select(pos, xr, e * lambda).mul_add(t, W::select(pos, e, xr * im));
-        let q = W::select(pos, xs, a_par * lambda).mul_add(t, W::select(pos, a_par, xs * im));
-        let tl = t * lambda;
-        let w3 = W::select(pos, W::ONE, tl * tl * tl);
-        let num = (self.u_abs2 * (y * y)) * (a_par * w3);
-        // At c = 0 the ratio is 1 only to rounding: 1, or 0 without an interface (N = 1).
-        let no_interface = self.u_abs2.simd_eq(W::ZERO);
-        let grazing = W::select(no_interface, W::ZERO, W::ONE);
-        let inside = x.simd_gt(W::ZERO);
-        (
-            W::select(inside, num, grazing),
-            W::select(inside, p, W::ONE),
-            W::select(inside, q, W::ONE),
-        )
     }
 }
 

@@ -136,6 +136,96 @@ impl F64Lanes for crate::wide::f64x8 {
     }
 }
 
+/// The further f64 operations of a kernel written once for `f64`, `f64x4` and `f64x8`
+/// (`cook_torrance::ggx_conductor_local`): square roots, magnitudes, comparisons and selects,
+/// with [`Real`]'s meanings on all three, so that one generic source gives the same bits
+/// lane for lane.
+pub(crate) trait F64Ops: F64Lanes + core::ops::Neg<Output = Self> {
+    /// A lane mask (`bool` on `f64`).
+    type M: Copy + core::ops::BitAnd<Output = Self::M>;
+    /// The correctly rounded square root.
+    fn sqrt(self) -> Self;
+    /// |self|.
+    fn abs(self) -> Self;
+    /// `self > o` (false where either is NaN).
+    fn gt(self, o: Self) -> Self::M;
+    /// `self >= o` (false where either is NaN).
+    fn ge(self, o: Self) -> Self::M;
+    /// `self == o` (false where either is NaN).
+    fn eq(self, o: Self) -> Self::M;
+    /// `t` where `m`, else `f`.
+    fn select(m: Self::M, t: Self, f: Self) -> Self;
+    /// The bit-pattern seed of 1 / sqrt(self) (`Real`'s sealed `rsqrt_bits`): within 3.5 %
+    /// for normal positive inputs.
+    fn rsqrt_bits(self) -> Self;
+}
+
+impl<W: Real<Scalar = f64>> F64Ops for W {
+    type M = W::Mask;
+    #[inline]
+    fn sqrt(self) -> Self {
+        Real::sqrt(self)
+    }
+    #[inline]
+    fn abs(self) -> Self {
+        Real::abs(self)
+    }
+    #[inline]
+    fn gt(self, o: Self) -> Self::M {
+        self.simd_gt(o)
+    }
+    #[inline]
+    fn ge(self, o: Self) -> Self::M {
+        self.simd_ge(o)
+    }
+    #[inline]
+    fn eq(self, o: Self) -> Self::M {
+        self.simd_eq(o)
+    }
+    #[inline]
+    fn select(m: Self::M, t: Self, f: Self) -> Self {
+        <W as Real>::select(m, t, f)
+    }
+    #[inline]
+    fn rsqrt_bits(self) -> Self {
+        crate::real::sealed::Sealed::rsqrt_bits(self, crate::real::sealed::Token::NEW)
+    }
+}
+
+impl F64Ops for crate::wide::f64x8 {
+    type M = Self;
+    #[inline]
+    fn sqrt(self) -> Self {
+        crate::wide::f64x8::sqrt(self)
+    }
+    #[inline]
+    fn abs(self) -> Self {
+        crate::wide::f64x8::abs(self)
+    }
+    #[inline]
+    fn gt(self, o: Self) -> Self {
+        self.simd_gt(o)
+    }
+    #[inline]
+    fn ge(self, o: Self) -> Self {
+        self.simd_ge(o)
+    }
+    #[inline]
+    fn eq(self, o: Self) -> Self {
+        self.simd_eq(o)
+    }
+    #[inline]
+    fn select(m: Self, t: Self, f: Self) -> Self {
+        m.select(t, f)
+    }
+    #[inline]
+    fn rsqrt_bits(self) -> Self {
+        Self::from_bits(
+            crate::wide::u64x8::splat(0x5fe6_eb50_c7b5_37a9) - (self.to_bits() >> 1_u64),
+        )
+    }
+}
+
 /// 2^-126, the smallest normal `f32` (also for the lanes' `split_tiny` in `crate::real`).
 pub(crate) const F32_MIN_POSITIVE: f64 = 1.175_494_350_822_287_5e-38;
 
