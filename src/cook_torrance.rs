@@ -329,7 +329,11 @@ pub fn ggx_conductor_rgb_fast<T: Real>(
 /// [`fresnel::conductor`] (correctly rounded to a few ULP) for F: D V carries about twenty
 /// roundings, and the whole is within 1e-14 relative of the generic assembly [`conductor`]
 /// with [`crate::ggx::Ggx`] (D of the normalized h in double words, V from the vectors'
-/// components) on unit directions (2.4e-15 found).
+/// components) on unit directions with |wo + wi| >= 1/8 (4.2e-15 found over 40 x 50 000
+/// random directions and parameters, default and `-C target-cpu=native` builds). Nearer
+/// opposite directions both round the sum of the f64 components, which moves h by up to
+/// about 2^-52 / |wo + wi| radians, and D by up to 2 / alpha relative per radian: there they
+/// agree within 1e-14 + 4e-16 (1 + 2 / alpha) / |wo + wi| (1.8e-16 / |wo + wi| found).
 ///
 /// On `f32` and `f32x8` the same function is evaluated in f64 (`f32x8` as one `f64x8`: one
 /// AVX-512 register where the target has them, two `f64x4` otherwise; lane for lane the scalar
