@@ -30,15 +30,10 @@
 //! [fresnel::conductor_fast(c, eta, k)]`). A closure that borrows them makes the compiler
 //! reload them after every store to an output (it cannot prove that the output slices, which
 //! reach the loop inside an array, do not alias them) and redo for every group the work that
-//! depends on them alone: a rough conductor with constant alpha, eta and k took 3.3x as long
+//! depends on them alone: a rough conductor with constant alpha, eta and k took 1.3x as long
 //! borrowed as moved (`bench/benches/throughput.rs`'s timing mode, rows `rough_conductor_fast` and
 //! `rough_conductor_fast_borrowed`, native build). The loop itself has no bounds check, so
-//! that work is hoisted out of it once the parameters are values. The whole groups and the
-//! tail go through one loop, the only place that calls the kernel, with the kernel moved into
-//! it: LLVM then inlines even a large kernel there (with a second call site for the tail it
-//! kept `cook_torrance::ggx_conductor_local` out of line, called once per group with its
-//! parameter work redone each time: 5.0 ms per 10^6 elements against 4.1 ms inlined, on the
-//! same timing mode).
+//! that work is hoisted out of it once the parameters are values.
 //!
 //! The tail: when the length is not a multiple of the lane count, the last group is loaded
 //! with its missing lanes set to the group's last element (a valid input, so a kernel sees
@@ -88,84 +83,45 @@ pub fn run<T: Real, const I: usize, const O: usize>(
     Ok(n)
 }
 
-/// [`run`] for `N = T::LANES` elements per group, over slices of length `n` (checked by the
-/// caller): the whole groups, then the tail as one more group whose lanes past the end repeat
-/// the last element, both through [`each_group`], the one place that calls the kernel.
+/// A slice as whole groups of N elements and the tail.
+type Part<'a, S, const N: usize> = (&'a [[S; N]], &'a [S]);
+/// A mutable slice as whole groups of N elements and the tail.
+type PartMut<'a, S, const N: usize> = (&'a mut [[S; N]], &'a mut [S]);
+
+/// The loop of [`run`] for `N = T::LANES` elements per group, over slices of length `n`
+/// (checked by the caller). The slices are viewed as arrays of `[T::Scalar; N]` cut to the
+/// same number of whole groups before the loop, so indexing them by group needs no bounds
+/// check: the loop has no panic path, and LLVM hoists whatever the kernel computes from
+/// loop-invariant arguments (a constant alpha, eta and k) out of it. With a check (and its
+/// panic) in the loop, `wide`'s x86 intrinsics may not be moved above it, and a rough
+/// conductor redid its per-(eta, k) work, half its time, for every group.
 #[inline]
 fn groups<T: Real, const N: usize, const I: usize, const O: usize>(
     n: usize,
     inputs: [&[T::Scalar]; I],
     outputs: [&mut [T::Scalar]; O],
-    kernel: impl FnMut([T; I]) -> [T; O],
+    mut kernel: impl FnMut([T; I]) -> [T; O],
 ) {
     debug_assert_eq!(N, T::LANES);
     let g = n / N;
-    let rem = n - g * N;
-    let whole_in: [&[[T::Scalar; N]]; I] = inputs.map(|s| s.as_chunks::<N>().0);
-    let tail_in: [[[T::Scalar; N]; 1]; I] = inputs.map(|s| {
-        let tail = s.as_chunks::<N>().1;
-        let last = rem.saturating_sub(1);
-        [core::array::from_fn(|l| {
-            tail.get(l.min(last)).copied().unwrap_or(T::Scalar::ZERO)
-        })]
-    });
-    let mut whole_out: [&mut [[T::Scalar; N]]; O] = core::array::from_fn(|_| Default::default());
-    let mut tails_out: [&mut [T::Scalar]; O] = core::array::from_fn(|_| Default::default());
-    for ((w, t), s) in whole_out.iter_mut().zip(tails_out.iter_mut()).zip(outputs) {
-        (*w, *t) = s.as_chunks_mut::<N>();
-    }
-    let kernel = each_group::<T, N, I, O, _>(g, whole_in, whole_out, kernel);
-    if rem > 0 {
-        let mut tail_out = [[[T::Scalar::ZERO; N]; 1]; O];
-        let ins1: [&[[T::Scalar; N]]; I] =
-            core::array::from_fn(|k| tail_in.get(k).map_or(&[][..], |t| &t[..]));
-        let outs1: [&mut [[T::Scalar; N]]; O] = {
-            let mut it = tail_out.iter_mut();
-            core::array::from_fn(|_| it.next().map_or(&mut [][..], |o| &mut o[..]))
+    // Whole groups, each slice cut to exactly g of them (`split_at_checked` cannot fail for
+    // slices of length n; the early return keeps a panic path out of the function).
+    let mut ins: [Part<'_, T::Scalar, N>; I] = [(&[], &[]); I];
+    for (slot, s) in ins.iter_mut().zip(inputs) {
+        let (whole, tail) = s.as_chunks::<N>();
+        let Some((whole, _)) = whole.split_at_checked(g) else {
+            return;
         };
-        let _ = each_group::<T, N, I, O, _>(1, ins1, outs1, kernel);
-        for (out, v) in tails_out.iter_mut().zip(tail_out) {
-            for (e, x) in out.iter_mut().zip(v[0]) {
-                *e = x;
-            }
-        }
+        *slot = (whole, tail);
     }
-}
-
-/// The loop of [`groups`] over `g` whole groups (every slice holds at least `g`): the one
-/// place that calls the kernel, which is moved in (not borrowed) and returned, so that LLVM
-/// inlines it into the loop and hoists what it computes from loop-invariant arguments (a
-/// constant alpha, eta and k) out of it. The slices are cut to exactly `g` groups first, so
-/// that indexing them by group needs no bounds check: with a check (and its panic) in the
-/// loop, `wide`'s x86 intrinsics may not be moved above it, and a rough conductor redid its
-/// per-(eta, k) work, half its time, for every group. Kept out of line, so that its two
-/// callers (whole groups, tail) do not make two copies of the kernel.
-#[inline(never)]
-fn each_group<T: Real, const N: usize, const I: usize, const O: usize, K>(
-    g: usize,
-    ins: [&[[T::Scalar; N]]; I],
-    mut outs: [&mut [[T::Scalar; N]]; O],
-    mut kernel: K,
-) -> K
-where
-    K: FnMut([T; I]) -> [T; O],
-{
-    // Each slice cut to exactly g groups (`split_at_checked` cannot fail for the callers'
-    // slices; the early return keeps a panic path out of the function), so that indexing by
-    // group in the loop needs no bounds check.
-    let mut cut_in: [&[[T::Scalar; N]]; I] = [&[]; I];
-    for (slot, s) in cut_in.iter_mut().zip(ins) {
-        let Some((whole, _)) = s.split_at_checked(g) else {
-            return kernel;
+    let mut outs: [PartMut<'_, T::Scalar, N>; O] =
+        core::array::from_fn(|_| (Default::default(), Default::default()));
+    for (slot, s) in outs.iter_mut().zip(outputs) {
+        let (whole, tail) = s.as_chunks_mut::<N>();
+        let Some((whole, _)) = whole.split_at_mut_checked(g) else {
+            return;
         };
-        *slot = whole;
-    }
-    let ins = cut_in;
-    for out in &mut outs {
-        let Some((whole, _)) = core::mem::take(out).split_at_mut_checked(g) else {
-            return kernel;
-        };
-        *out = whole;
+        *slot = (whole, tail);
     }
     let pad = [T::Scalar::ZERO; N];
     let mut sink = [T::Scalar::ZERO; N];
@@ -173,18 +129,30 @@ where
         // `get` with a fallback rather than indexing: j < g always holds, and no bounds check
         // (with its panic) enters the loop; the fallbacks compile to selects.
         let x: [T; I] = core::array::from_fn(|k| {
-            let c = ins[k].get(j).unwrap_or(&pad);
+            let c = ins[k].0.get(j).unwrap_or(&pad);
             T::from_fn(|l| c[l % N])
         });
         let y = kernel(x);
         for (out, v) in outs.iter_mut().zip(y) {
-            let c = out.get_mut(j).unwrap_or(&mut sink);
+            let c = out.0.get_mut(j).unwrap_or(&mut sink);
             for (l, e) in c.iter_mut().enumerate() {
                 *e = v.lane(l);
             }
         }
     }
-    kernel
+    let rem = n - g * N;
+    if rem > 0 {
+        let x: [T; I] = core::array::from_fn(|k| {
+            let s = ins[k].1;
+            T::from_fn(|l| s.get(l.min(rem - 1)).copied().unwrap_or(T::Scalar::ZERO))
+        });
+        let y = kernel(x);
+        for (out, v) in outs.into_iter().zip(y) {
+            for (l, e) in out.1.iter_mut().enumerate() {
+                *e = v.lane(l);
+            }
+        }
+    }
 }
 
 /// Elements per task of the parallel forms ([`par_run`]): 2^14, a multiple of every lane
