@@ -7,16 +7,19 @@
 //! The f32 tier is documented as one f64 evaluation rounded to f32 once, with an error below
 //! 1e-13 relative before that rounding where F is well conditioned: within 0.5 ULP (plus
 //! about 2e-6) of the exact value. The points: random hemisphere directions (cosines down to
-//! 1e-6), alpha log-uniform in [1e-3, 1], metals and (eta, k) log-uniform in [1e-3, 1e3]; an
-//! edge grid (grazing down to 2^-60, nearly opposite and equal directions, alpha at and past
-//! both clamps, eta and k from 2^-126 to f32::MAX, eta within 2^-20 of 1); then a climb that
-//! moves the worst points' components by a few f32 ULP while the error grows.
+//! 1e-6), alpha log-uniform in [1e-3, 1], metals and (eta, k) log-uniform in [1e-3, 1e3]; a
+//! quarter as many over the whole domain (cosines down to 2^-60, nearly opposite pairs, alpha
+//! past both clamps, eta and k over [2^-126, f32::MAX]); an edge grid (grazing down to
+//! 2^-149, nearly opposite and equal directions, alpha at and past both clamps, eta and k
+//! from 2^-126 to f32::MAX, eta within 2^-20 of 1); then a climb that moves the worst points'
+//! components by a few f32 ULP while the error grows.
 //!
 //! "Well conditioned" is the crate's own rule: k >= 0.1 or eta >= 1. Elsewhere (eta < 1 with
 //! small k, a critical-angle-like region, and |N| tiny) F amplifies the kernel's f64
 //! roundings of c; those points are measured and printed, with a looser bound.
 //!
-//! `BRDF_ORACLE_POINTS` sets the number of random points (default 20 000),
+//! `BRDF_ORACLE_POINTS` sets the number of random points (default 20 000, plus a quarter as
+//! many over the whole domain),
 //! `BRDF_ORACLE_SEED` their seed (printed). Run:
 //! `cargo test -p brdf-oracle --release --test conductor_local -- --nocapture`.
 
@@ -243,12 +246,56 @@ fn random_points(g: &mut Rng, n: usize) -> Vec<Point> {
         .collect()
 }
 
-/// The edge grid: direction pairs (grazing down to 2^-60 on one or both sides, nearly
+/// `n` random points over the whole domain: cosines log-uniform down to 2^-60, half of the
+/// pairs nearly opposite (the mirror azimuth turned by a log-uniform angle down to 2^-40);
+/// alpha log-uniform in [1e-5, 1e5] (past both clamps); eta and k log-uniform over
+/// [2^-126, f32::MAX], a tenth of the k exactly 0.
+fn wide_points(g: &mut Rng, n: usize) -> Vec<Point> {
+    let max = f64::from(f32::MAX);
+    let min = f64::from(f32::MIN_POSITIVE);
+    (0..n)
+        .map(|_| {
+            let z1 = g.log_range(2f64.powi(-60), 1.0);
+            let z2 = g.log_range(2f64.powi(-60), 1.0);
+            let phi = g.range(0.0, std::f64::consts::TAU);
+            let phi2 = if g.uniform() < 0.5 {
+                let turn = g.log_range(2f64.powi(-40), 1.0);
+                phi + std::f64::consts::PI + if g.uniform() < 0.5 { turn } else { -turn }
+            } else {
+                g.range(0.0, std::f64::consts::TAU)
+            };
+            Point {
+                wo: dir(z1, phi),
+                wi: dir(z2, phi2),
+                alpha: g.log_range(1e-5, 1e5) as f32,
+                eta: g.log_range(min, max) as f32,
+                k: if g.uniform() < 0.1 {
+                    0.0
+                } else {
+                    g.log_range(min, max) as f32
+                },
+            }
+        })
+        .collect()
+}
+
+/// The edge grid: direction pairs (grazing down to 2^-149 on one or both sides, nearly
 /// opposite near the horizon, equal, normal incidence, one below the horizon) crossed with
 /// alpha at, beside and past both clamps, and with eta and k from 2^-126 to f32::MAX,
 /// including eta within 2^-20 of 1 and its neighbouring floats.
 fn edge_points() -> Vec<Point> {
-    let tiny = [2f64.powi(-60), 2f64.powi(-40), 2f64.powi(-24), 1e-6, 1e-3];
+    // Down to f32's smallest subnormal number, where V (about 1 / (alpha n.v) for a grazing
+    // n.v) and D V F exceed f32::MAX.
+    let tiny = [
+        2f64.powi(-149),
+        2f64.powi(-126),
+        2f64.powi(-100),
+        2f64.powi(-60),
+        2f64.powi(-40),
+        2f64.powi(-24),
+        1e-6,
+        1e-3,
+    ];
     let mut pairs: Vec<([f32; 3], [f32; 3])> = Vec::new();
     for &z in &tiny {
         // Grazing on one side, ordinary and grazing on the other.
@@ -405,6 +452,7 @@ fn ggx_conductor_local_f32_within_half_ulp() {
         .unwrap_or(20_000);
     let mut g = Rng::fresh("cook_torrance::ggx_conductor_local f32");
     let mut pts = random_points(&mut g, n);
+    pts.extend(wide_points(&mut g, n / 4));
     let random_count = pts.len();
     pts.extend(edge_points());
     let edge_count = pts.len() - random_count;
@@ -441,6 +489,10 @@ fn ggx_conductor_local_f32_within_half_ulp() {
         }
     }
 
+    let capped = scored.iter().filter(|s| s.y == f32::MAX).count();
+    let zero = scored.iter().filter(|s| s.y == 0.0).count();
+    let subnormal = scored.iter().filter(|s| s.y.is_subnormal()).count();
+    eprintln!("  results capped at f32::MAX: {capped}, 0: {zero}, subnormal: {subnormal}");
     let count = |well: bool| {
         scored
             .iter()
