@@ -613,6 +613,23 @@ pub fn ggx_conductor_local(
     eta: &Float,
     k: &Float,
 ) -> Float {
+    let zero = num(alpha.prec(), 0.0);
+    ggx_conductor_local_moved(wo, wi, alpha, eta, k, &zero)
+}
+
+/// [`ggx_conductor_local`] with F taken at c^2 (1 + `rel`) (saturated to [0, 1]) in place of
+/// c^2, D and V unchanged: the change that a relative error `rel` in the kernel's c^2 alone
+/// would make, which measures how F's conditioning amplifies the kernel's own roundings of c
+/// (near the critical cosine of eta < 1 with small k, dF/dc grows without bound).
+#[must_use]
+pub fn ggx_conductor_local_moved(
+    wo: [&Float; 3],
+    wi: [&Float; 3],
+    alpha: &Float,
+    eta: &Float,
+    k: &Float,
+    rel: &Float,
+) -> Float {
     let p = alpha.prec();
     let zero = num(p, 0.0);
     if *wo[2] <= 0 || *wi[2] <= 0 {
@@ -637,8 +654,10 @@ pub fn ggx_conductor_local(
         + Float::with_val(p, wo[2] * &s[2]))
     .max(&zero);
     let x2 = sq(&x);
-    let sin2 = ((Float::with_val(p, &ss - &x2)) / &ss).max(&zero);
-    let c = (x2 / &ss).min(&num(p, 1.0)).sqrt();
+    let c2 = Float::with_val(p, &x2 / &ss);
+    let moved = Float::with_val(p, &c2 * rel);
+    let sin2 = ((Float::with_val(p, &ss - &x2)) / &ss - &moved).max(&zero);
+    let c = (c2 + moved).min(&num(p, 1.0)).sqrt();
     let f = if c.is_zero() {
         // Grazing: |r_s| = |r_p| = 1, or no interface at all (N = 1).
         if *eta == 1 && k.is_zero() {
