@@ -359,8 +359,15 @@ pub fn ggx_conductor_rgb_fast<T: Real>(
 /// `-C target-cpu=native` builds, and 0.5000 on an edge grid of grazing, opposite and equal
 /// directions, alpha near both clamps, eta and k from 2^-126 to f32::MAX and eta within 2^-20
 /// of 1, where F is well conditioned; `BRDF_TEST_SEED=<n> cargo test --all-features --test
-/// cook_torrance local:: -- --nocapture`). A NaN or infinite component makes |s|^2 NaN or
-/// infinite, which the f64 evaluation maps to NaN.
+/// cook_torrance local:: -- --nocapture`). Against a correctly rounded (MPFR) evaluation from
+/// the same f32 inputs where F is well conditioned: 0.500000004 ULP found (random, whole-domain
+/// and edge-grid points and a local search from the worst, 3 seeds of 1.25 x 10^6 points,
+/// default and native builds; `BRDF_ORACLE_POINTS=<n> cargo test -p brdf-oracle --release
+/// --test conductor_local -- --nocapture`). Near the critical angle of a denser-side interface
+/// (eta < 1, k near 0) F turns with c faster than the rounding of c^2 (2^-52 relative) can
+/// follow: there the error is that rounding's, up to 4 % found (6.7e5 ULP at eta = 3.6e-4,
+/// k = 1e-30), within 4 times the change of the exact value when c^2 moves by 2^-51. A NaN or
+/// infinite component makes |s|^2 NaN or infinite, which the f64 evaluation maps to NaN.
 ///
 /// Run time on `f32x8` (a Zen 4 core, `-C target-cpu=native`, `bench/mitsuba/compare.py
 /// --n 1000000`, one interleaved run, load average 0.7 on 2 cores): 3.52 ms per 10^6
