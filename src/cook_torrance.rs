@@ -335,8 +335,8 @@ pub fn ggx_conductor_rgb_fast<T: Real>(
 /// about 2^-52 / |wo + wi| radians, and D by up to 2 / alpha relative per radian: there they
 /// agree within 1e-14 + 4e-16 (1 + 2 / alpha) / |wo + wi| (1.8e-16 / |wo + wi| found).
 ///
-/// On `f32` and `f32x8` the same function is evaluated in f64 (`f32x8` as one `f64x8`: one
-/// AVX-512 register where the target has them, two `f64x4` otherwise; lane for lane the scalar
+/// On `f32` and `f32x8` the same function is evaluated in f64 (`f32x8` as one `f64x8` register
+/// where the target has AVX-512, as two `f64x4` halves otherwise; lane for lane the scalar
 /// operations) and rounded to f32 once (a result below f32's smallest normal number from normal
 /// numbers, as [`fresnel::conductor`]'s), in a form with fewer roots and divisions. F depends on
 /// the directions only through c = x / sqrt(y) with x = wo.s and y = |s|^2, and is unchanged
@@ -350,11 +350,14 @@ pub fn ggx_conductor_rgb_fast<T: Real>(
 /// Re(N^2) is kept where |N| is below 2^-27 and Re(u) alone would round to -1 (at normal
 /// incidence y z would then be 0 and F 0 / 0). F's quotient is folded into D V's:
 /// f = (num alpha^2 |s|^4 g) / (2 pi p^2 q t^2 den g), g the square of the bit-pattern seed of
-/// 1 / sqrt(t^2 den), which keeps both products inside f64's normal range; V's two roots are
-/// correctly rounded f64 square roots. Error budget before the rounding to f32: the two
-/// roundings of r move c by 2^-52; F's polynomials, roots and products about thirty roundings
-/// of 2^-53; D V about twenty; together below 1e-13 relative, 2e-6 of an f32 ULP beside the
-/// rounding's 0.5: within 1 ULP of the f64 tier on the same directions (0.500 found over
+/// 1 / sqrt(t^2 den), which keeps both products inside f64's normal range. V's two roots are
+/// correctly rounded f64 square roots where the target has AVX-512, elsewhere an f32
+/// reciprocal root (correctly rounded f32 `sqrt` and division, the same bits on every target)
+/// and one Newton step in f64 (within 4e-14 relative): one choice per target, whichever was
+/// faster (below). Error budget before the rounding to f32: the two roundings of r move c by
+/// 2^-52; F's polynomials, roots and products about thirty roundings of 2^-53; D V about
+/// twenty, V's roots 4e-14 each at most; together below 1e-13 relative, 2e-6 of an f32 ULP
+/// beside the rounding's 0.5: within 1 ULP of the f64 tier on the same directions (0.500 found over
 /// 40 x 200 000 random directions and parameters, seeds 1 to 40, default and
 /// `-C target-cpu=native` builds, and 0.5000 on an edge grid of grazing, opposite and equal
 /// directions, alpha near both clamps, eta and k from 2^-126 to f32::MAX and eta within 2^-20
@@ -370,12 +373,14 @@ pub fn ggx_conductor_rgb_fast<T: Real>(
 /// infinite component makes |s|^2 NaN or infinite, which the f64 evaluation maps to NaN.
 ///
 /// Run time on `f32x8` (a Zen 4 core, `-C target-cpu=native`, `bench/mitsuba/compare.py
-/// --n 1000000`, one interleaved run, load average 0.7 on 2 cores): 3.52 ms per 10^6
+/// --n 1000000`, one interleaved run, load average 1.2 on 2 cores): 3.49 ms per 10^6
 /// hemisphere direction pairs times n.l, 1.76 times Mitsuba 3's LLVM back end on the same
-/// pairs (2.00 ms, whose f32 arithmetic is 21 ULP off where this is 1.5). Two `f64x4` halves
-/// with V's roots from f32 seeds (an f32 square root and division, then a Newton step) took
-/// 2.65 times; on this core the `f64x8` square roots cost less than those seeds with their
-/// conversions between 512- and 256-bit registers. More in `bench/mitsuba/README.md`.
+/// pairs (1.99 ms, whose f32 arithmetic is 21 ULP off where this is 1.5). Two `f64x4` halves
+/// with V's roots from f32 seeds took 2.65 times; with `f64x8` lanes the hardware f64 roots
+/// cost less than those seeds with their conversions between 512- and 256-bit registers,
+/// and on `f64x4` halves (the same core built with `-C target-cpu=x86-64-v3`, AVX2 and FMA
+/// only) the other way round: 5.4 ms with the seeds against 9.3 with `vsqrtpd` (5.9 for the
+/// form before this one). More in `bench/mitsuba/README.md`.
 ///
 /// Sources: as [`ggx_conductor_rgb`]; the half-vector form of D as Mitsuba 3's
 /// `MicrofacetDistribution::eval` (`include/mitsuba/render/microfacet.h`).
@@ -456,12 +461,20 @@ impl crate::real::sealed::Widened<9> for ConductorLocal {
         )
     }
 
-    /// All eight lanes as one `f64x8` (one AVX-512 register where the target has them):
-    /// half the instructions of two `f64x4` halves, and V's f32 seeds as one `f32x8`
-    /// square root and division; the same operations lane for lane.
+    /// With AVX-512, all eight lanes as one `f64x8` register: half the instructions of two
+    /// `f64x4` halves. Elsewhere two `f64x4` halves one after the other (an `f64x8` made of
+    /// two `f64x4` needs twice the registers, and spilling them took 1.7 times as long on
+    /// an AVX2 build). The same operations lane for lane either way.
     #[inline]
     fn lanes8(self, x: [crate::wide::f32x8; 9]) -> crate::wide::f32x8 {
+        #[cfg(target_feature = "avx512f")]
         let v = Self::value(x.map(crate::widen::widen8));
+        #[cfg(not(target_feature = "avx512f"))]
+        let v = {
+            let lo = Self::value(x.map(|v| crate::real::widen_half(v, 0))).to_array();
+            let hi = Self::value(x.map(|v| crate::real::widen_half(v, 4))).to_array();
+            crate::wide::f64x8::new([lo[0], lo[1], lo[2], lo[3], hi[0], hi[1], hi[2], hi[3]])
+        };
         let one = crate::wide::f64x8::splat(1.0);
         crate::widen::join_tiny_f32x8(
             crate::widen::tiny_big(v, one),
@@ -487,13 +500,13 @@ impl ConductorLocal {
         let ss = s[2].mul_add(s[2], sxy);
         let wo_s = vx.mul_add(s[0], vy.mul_add(s[1], vz * s[2]));
         let (f_num, f_p, f_q) = fresnel::ConductorWide::new(eta, k).of_projection(wo_s, ss);
-        // V's two roots, correctly rounded (their argument alpha^2 (1 - c^2) + c^2 lies in
-        // [1e-8, 1e8] for the clamped alpha).
+        // V's two roots (`v_root`; their argument alpha^2 (1 - c^2) + c^2 lies in [1e-8, 1e8]
+        // for the clamped alpha).
         let cap = W::splat(f64::from(f32::MAX));
         let (cv, cl) = (vz.max(zero).min(one), lz.max(zero).min(one));
         let a2 = a * a;
         let t = a2.mul_add(s[2] * s[2], sxy);
-        let root = |c: W| a2.mul_add(sin2_lanes(c), c * c).sqrt();
+        let root = |c: W| v_root(a2.mul_add(sin2_lanes(c), c * c));
         let den = cl.mul_add(root(cv), cv * root(cl));
         let num = (a2 * W::splat(0.5 * core::f64::consts::FRAC_1_PI)) * (ss * ss);
         // D V = num / dv_den lies in [2^-50, 2^243] for f32 inputs, dv_den in [2^-812, 2^75]:
@@ -515,6 +528,40 @@ impl ConductorLocal {
             W::splat(f64::NAN),
         )
     }
+}
+
+/// sqrt(x) for x in [2^-100, 2^100] on f64 lanes, for V's two roots: with AVX-512 the
+/// correctly rounded root (on a Zen 4 core 8 lanes of `vsqrtpd` cost less than
+/// [`sqrt_by_f32`]'s seeds with their conversions between 512- and 256-bit registers: 3.5
+/// against 3.9 ms per 10^6 rough conductor evaluations); elsewhere [`sqrt_by_f32`] (on the
+/// same core built for AVX2 alone, `vsqrtpd` on 4 lanes took 9.3 ms against 5.4). One
+/// choice per target, so that `f32` and `f32x8` agree bit for bit.
+#[cfg(feature = "ggx")]
+#[inline]
+fn v_root<W: crate::widen::F64Ops>(x: W) -> W {
+    #[cfg(target_feature = "avx512f")]
+    {
+        x.sqrt()
+    }
+    #[cfg(not(target_feature = "avx512f"))]
+    {
+        sqrt_by_f32(x)
+    }
+}
+
+/// sqrt(x) for x in [2^-100, 2^100] on f64 lanes, within 4e-14 relative: the f32 reciprocal
+/// root y0 = 1 / sqrt(fl32(x)) (two correctly rounded f32 operations, the same bits on every
+/// target and lane type; within 1.3 2^-23 of 1 / sqrt(x)), halved exactly by the division
+/// itself (h0 = 0.5 / sqrt), then one Newton step in f64, s0 = x y0 = (x + x) h0,
+/// sqrt(x) = s0 + h0 (x - s0^2), which leaves -1.5 (y0 sqrt(x) - 1)^2 and a few roundings of
+/// 2^-53 (`sqrt_by_f32_is_within_its_stated_error`).
+#[cfg(feature = "ggx")]
+#[cfg_attr(target_feature = "avx512f", allow(dead_code))]
+#[inline]
+fn sqrt_by_f32<W: crate::widen::F64Ops>(x: W) -> W {
+    let h0 = x.half_rsqrt_f32();
+    let s0 = (x + x) * h0;
+    h0.mul_add((-s0).mul_add(s0, x), s0)
 }
 
 /// 1 - c^2 as `crate::microfacet::sin2_working` forms it, on f64 lanes.
@@ -814,4 +861,40 @@ pub fn beckmann_dielectric<T: Real>(c: Cosines<T>, alpha: Alpha<T>, eta: T) -> T
     let f = fresnel::dielectric(c.v_dot_h.saturate(), eta);
     let dv = beckmann_dv(c, alpha);
     assemble(dv, c, alpha, f)
+}
+
+#[cfg(all(test, feature = "ggx"))]
+mod tests {
+    use super::sqrt_by_f32;
+
+    /// `sqrt_by_f32` within its stated 4e-14 (relative, from below, to a few roundings of
+    /// 2^-53) of the correctly rounded f64 root over [2^-100, 2^100] (a geometric sweep of
+    /// about 10^7 points, and the powers of two with their neighbours), `f64x4` and `f64x8`
+    /// lanes equal to the scalar.
+    #[test]
+    fn sqrt_by_f32_is_within_its_stated_error() {
+        let mut worst = 0.0f64;
+        let mut check = |x: f64| {
+            let got = sqrt_by_f32(x);
+            let rel = got / x.sqrt() - 1.0;
+            assert!(rel.abs() <= 4e-14 && rel <= 4e-16, "sqrt({x:e}): {rel:e}");
+            let lanes = sqrt_by_f32(crate::wide::f64x4::splat(x)).to_array();
+            assert!(lanes.iter().all(|l| l.to_bits() == got.to_bits()), "{x:e}");
+            let lanes = sqrt_by_f32(crate::wide::f64x8::splat(x)).to_array();
+            assert!(lanes.iter().all(|l| l.to_bits() == got.to_bits()), "{x:e}");
+            worst = worst.max(rel.abs());
+        };
+        let mut x = libm::exp2(-100.0);
+        while x < libm::exp2(100.0) {
+            check(x);
+            x *= 1.000_013_7;
+        }
+        for e in -100..=100 {
+            let p = libm::exp2(f64::from(e));
+            for q in [p, p * (1.0 + f64::EPSILON), p * (1.0 - f64::EPSILON / 2.0)] {
+                check(q);
+            }
+        }
+        assert!(worst <= 4e-14, "{worst:e}");
+    }
 }
