@@ -11,8 +11,9 @@
 //!   the IEEE-arithmetic helpers of `INFINITY_EXEMPT`;
 //! - (d) on `f32x8` and `f64x4`, a NaN or an invalid parameter in one lane leaves the other
 //!   lanes bit for bit as they were, and those equal the scalar results within 16 ulps
-//!   (`tests/lanes/vs_scalar.rs` holds the per-function lane bounds; this only shows no lane
-//!   leaks into another).
+//!   (256 for the material's weighted samplers, whose BRDF at the drawn direction amplifies
+//!   the lanes' last-ulp `sin` and `cos`; `tests/lanes/vs_scalar.rs` holds the per-function
+//!   lane bounds; this only shows no lane leaks into another).
 //!
 //! A zero-length direction is finite input: another test sets each kernel's `wo`, `wi` or
 //! `dir` to (0, 0, 0) on every lane type and requires finite output and, from every sampler
@@ -79,11 +80,19 @@ struct Kernel<T> {
     /// Inputs whose NaN reaches only some outputs (a component accessor, a per-channel
     /// colour function): (input, outputs that must be NaN). Every other input: all outputs.
     deps: Vec<(&'static str, Vec<usize>)>,
+    /// How far (in ulps of the larger) a lane may sit from the scalar result in check (d):
+    /// 16, unless the kernel feeds a lane function's documented last-ulp difference (the
+    /// lanes' `sin` and `cos`) through a steep step.
+    lane_ulps: f64,
 }
 
 impl<T> Kernel<T> {
     fn dep(mut self, input: &'static str, outputs: &[usize]) -> Self {
         self.deps.push((input, outputs.to_vec()));
+        self
+    }
+    fn lane_ulps(mut self, ulps: f64) -> Self {
+        self.lane_ulps = ulps;
         self
     }
 
@@ -101,6 +110,7 @@ fn k<T>(name: &str, args: Vec<Vec<Arg>>, f: impl Fn(&[T]) -> Vec<T> + 'static) -
         args: args.concat(),
         f: Box::new(f),
         deps: Vec::new(),
+        lane_ulps: 16.0,
     }
 }
 
@@ -2546,14 +2556,21 @@ fn material_rows<T: Real>(t: &mut Vec<Kernel<T>>) {
             vec![v("wo", WO), u()],
             move |x| o4(m.sample(v3(x, 0), x[3], x[4])),
         ));
-        t.push(k(
-            &format!("MetallicRoughness::sample_weighted({label})"),
-            vec![v("wo", WO), u()],
-            move |x| {
-                let (wi, pdf, w) = m.sample_weighted(v3(x, 0), x[3], x[4]);
-                [o4((wi, pdf)), o3(w)].concat()
-            },
-        ));
+        // The weights evaluate the BRDF at the drawn direction, whose cosine-lobe azimuth
+        // comes from the lanes' `sin` and `cos` (within 1 ulp of the scalar's): the specular
+        // lobe (alpha 0.09) moves by up to 7.3e-6 relative per ulp there (found on the
+        // `-C target-cpu=native` build, `specular` at u = (0.3, 0.6)).
+        t.push(
+            k(
+                &format!("MetallicRoughness::sample_weighted({label})"),
+                vec![v("wo", WO), u()],
+                move |x| {
+                    let (wi, pdf, w) = m.sample_weighted(v3(x, 0), x[3], x[4]);
+                    [o4((wi, pdf)), o3(w)].concat()
+                },
+            )
+            .lane_ulps(256.0),
+        );
         // World space: a shading point of normal n and view v (both world-space unit vectors).
         let n_v = || [v("n", [0.0, 0.6, 0.8]), v("v", WO)].concat();
         let sp = |x: &[T]| ShadingPoint::new(v3(x, 0), v3(x, 3));
@@ -2572,14 +2589,17 @@ fn material_rows<T: Real>(t: &mut Vec<Kernel<T>>) {
             vec![n_v(), u()],
             move |x| o4(m.sample_world(&sp(x), x[6], x[7])),
         ));
-        t.push(k(
-            &format!("MetallicRoughness::sample_weighted_world({label})"),
-            vec![n_v(), u()],
-            move |x| {
-                let (l, pdf, w) = m.sample_weighted_world(&sp(x), x[6], x[7]);
-                [o4((l, pdf)), o3(w)].concat()
-            },
-        ));
+        t.push(
+            k(
+                &format!("MetallicRoughness::sample_weighted_world({label})"),
+                vec![n_v(), u()],
+                move |x| {
+                    let (l, pdf, w) = m.sample_weighted_world(&sp(x), x[6], x[7]);
+                    [o4((l, pdf)), o3(w)].concat()
+                },
+            )
+            .lane_ulps(256.0),
+        );
     }
 }
 
@@ -2917,7 +2937,7 @@ fn check<T: Real>(kern: &Kernel<T>, scalar: &Kernel<T::Scalar>, ty: &str) -> Out
                 for (l, y) in lanes(lane_v).into_iter().enumerate() {
                     let ok = y == sc
                         || (y.is_nan() && sc.is_nan())
-                        || (y - sc).abs() <= 16.0 * eps * y.abs().max(sc.abs());
+                        || (y - sc).abs() <= kern.lane_ulps * eps * y.abs().max(sc.abs());
                     o.counts[3] += 1;
                     if !ok {
                         o.fails[3].push(format!(
