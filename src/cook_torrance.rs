@@ -393,22 +393,27 @@ pub fn ggx_conductor_local<T: Real>(wo: V3<T>, wi: V3<T>, alpha: Alpha<T>, eta: 
     // NaN components give NaN inside (`ConductorLocal`); the parameters are checked here, once
     // for a loop with fixed parameters.
     let value = T::via_f64(x, ConductorLocal, crate::real::sealed::Token::NEW);
-    let ok = fresnel::valid_eta(eta) & k.simd_ge(T::ZERO) & k.simd_le(T::MAX) & !a.is_nan();
-    crate::domain::nan_unless(ok, value)
+    crate::domain::nan_unless(local_params_ok(a, eta, k), value)
 }
 
-/// NaN where [`ggx_conductor_local`]'s and [`ggx_conductor_local_fast`]'s inputs are out of
-/// their domain (the f32 rounding does not keep a NaN, and an invalid eta or k gives an
-/// unspecified F). `probe` is NaN exactly where a component of wo or wi is NaN or infinite
-/// (the callers form it from sums of 0 times the components, or from 0 |wo + wi|^2), 0
-/// elsewhere; it is compared, not added, so that a subnormal result meets no arithmetic. The
-/// eta, k and alpha checks are the same for every lane of a loop with fixed parameters, where
-/// they are computed once.
+/// Where the parameters of [`ggx_conductor_local`] and [`ggx_conductor_local_fast`] are in
+/// their domain (an invalid eta or k gives an unspecified F, and the f32 rounding does not
+/// keep a NaN): eta valid, k in [0, MAX], the clamped alpha not NaN. The same for every lane
+/// of a loop with fixed parameters, where it is computed once.
+#[cfg(feature = "ggx")]
+#[inline]
+fn local_params_ok<T: Real>(a: T, eta: T, k: T) -> T::Mask {
+    fresnel::valid_eta(eta) & k.simd_ge(T::ZERO) & k.simd_le(T::MAX) & !a.is_nan()
+}
+
+/// NaN where [`ggx_conductor_local_fast`]'s inputs are out of their domain:
+/// [`local_params_ok`], and `probe` NaN exactly where a component of wo or wi is NaN or
+/// infinite (the caller forms it as 0 |wo + wi|^2), 0 elsewhere; it is compared, not added,
+/// so that a subnormal result meets no arithmetic.
 #[cfg(feature = "ggx")]
 #[inline]
 fn local_guards<T: Real>(probe: T, a: T, eta: T, k: T, value: T) -> T {
-    let ok = fresnel::valid_eta(eta) & k.simd_ge(T::ZERO) & k.simd_le(T::MAX) & !a.is_nan();
-    crate::domain::nan_unless(ok, nan_where(probe.is_nan(), value))
+    crate::domain::nan_unless(local_params_ok(a, eta, k), nan_where(probe.is_nan(), value))
 }
 
 /// The value of [`ggx_conductor_local`] for the clamped alpha (invalid eta, k or NaN give an

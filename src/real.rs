@@ -1017,6 +1017,11 @@ fn exp_ftz_f32x8(x: f32x8) -> f32x8 {
 /// module, so that outside the crate it can be neither named, implemented nor called, and
 /// `Real` is implemented for `f32`, `f64`, `f32x8` and `f64x4` only.
 pub(crate) mod sealed {
+    /// R of [`Sealed::rsqrt_bits`] for f32 types (Lomont 2003).
+    pub(crate) const RSQRT_SEED_F32: u32 = 0x5f37_59df;
+    /// R of [`Sealed::rsqrt_bits`] for f64 types (Lomont 2003).
+    pub(crate) const RSQRT_SEED_F64: u64 = 0x5fe6_eb50_c7b5_37a9;
+
     /// See the module docs.
     /// A value only this crate can make: the argument that keeps [`Sealed`]'s methods, which
     /// are reachable through any `T: Real` bound, uncallable from outside.
@@ -1045,7 +1050,7 @@ pub(crate) mod sealed {
         fn pow2_bits(self, token: Token) -> Self;
         /// The seed of a reciprocal square root from the bits of `self` >= 0: the bit pattern
         /// `R - (bits >> 1)` (halving and negating the exponent, the significand's linear
-        /// part absorbed by R: 0x5f37_59df for f32 types, 0x5fe6_eb50_c7b5_37a9 for f64 types;
+        /// part absorbed by R: [`RSQRT_SEED_F32`] for f32 types, [`RSQRT_SEED_F64`] for f64 types;
         /// Lomont 2003, "Fast Inverse Square Root"), within 3.5 % of 1 / sqrt(self) for
         /// every positive normal `self`; integer operations only, the same bits on every
         /// target. 0 gives a finite value (about 2^63 / 2^511); subnormal, infinite and NaN
@@ -1098,7 +1103,7 @@ pub(crate) mod sealed {
         }
         #[inline]
         fn rsqrt_bits(self, _: Token) -> Self {
-            f32::from_bits(0x5f37_59df_u32.wrapping_sub(self.to_bits() >> 1))
+            f32::from_bits(RSQRT_SEED_F32.wrapping_sub(self.to_bits() >> 1))
         }
         #[inline]
         fn via_f64<K: Widened<N>, const N: usize>(x: [Self; N], k: K, _: Token) -> Self {
@@ -1116,7 +1121,7 @@ pub(crate) mod sealed {
         }
         #[inline]
         fn rsqrt_bits(self, _: Token) -> Self {
-            f64::from_bits(0x5fe6_eb50_c7b5_37a9_u64.wrapping_sub(self.to_bits() >> 1))
+            f64::from_bits(RSQRT_SEED_F64.wrapping_sub(self.to_bits() >> 1))
         }
         #[inline]
         fn via_f64<K: Widened<N>, const N: usize>(x: [Self; N], k: K, _: Token) -> Self {
@@ -1134,7 +1139,7 @@ pub(crate) mod sealed {
         }
         #[inline]
         fn rsqrt_bits(self, _: Token) -> Self {
-            Self::from_bits(wide::u32x8::splat(0x5f37_59df) - (self.to_bits() >> 1_u32))
+            Self::from_bits(wide::u32x8::splat(RSQRT_SEED_F32) - (self.to_bits() >> 1_u32))
         }
         #[inline]
         fn via_f64<K: Widened<N>, const N: usize>(x: [Self; N], k: K, _: Token) -> Self {
@@ -1155,7 +1160,7 @@ pub(crate) mod sealed {
         }
         #[inline]
         fn rsqrt_bits(self, _: Token) -> Self {
-            Self::from_bits(wide::u64x4::splat(0x5fe6_eb50_c7b5_37a9) - (self.to_bits() >> 1_u64))
+            Self::from_bits(wide::u64x4::splat(RSQRT_SEED_F64) - (self.to_bits() >> 1_u64))
         }
         #[inline]
         fn via_f64<K: Widened<N>, const N: usize>(x: [Self; N], k: K, _: Token) -> Self {

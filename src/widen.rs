@@ -244,7 +244,8 @@ impl F64Ops for crate::wide::f64x8 {
     #[inline]
     fn rsqrt_bits(self) -> Self {
         Self::from_bits(
-            crate::wide::u64x8::splat(0x5fe6_eb50_c7b5_37a9) - (self.to_bits() >> 1_u64),
+            crate::wide::u64x8::splat(crate::real::sealed::RSQRT_SEED_F64)
+                - (self.to_bits() >> 1_u64),
         )
     }
 }
