@@ -265,11 +265,20 @@ fn c_recip(a: &Complex) -> Complex {
     (a.0.clone() / &n, -a.1.clone() / n)
 }
 
-/// Principal square root (re >= 0; im with the sign of the argument's im).
+/// Principal square root of a complex number (re >= 0, im with the sign of the argument's
+/// im), written so that nothing cancels: the larger part from sqrt((|a| + |Re a|) / 2), the
+/// other as |Im a| / (2 larger). Forming both parts from |a| +- Re a cancels in one of them
+/// where |Im a| is far below |Re a| (|N| near 2^-126, where Im(N^2) is 2^-251 beside a sin^2
+/// near 1).
 fn c_sqrt(a: &Complex) -> Complex {
+    let p = a.0.prec();
+    if a.0.is_zero() && a.1.is_zero() {
+        return (num(p, 0.0), num(p, 0.0));
+    }
     let m = c_norm2(a).sqrt();
-    let re = ((m.clone() + &a.0) / 2i32).sqrt();
-    let im = ((m - &a.0) / 2i32).sqrt();
+    let big = ((m + a.0.clone().abs()) / 2i32).sqrt();
+    let small = Float::with_val(p, a.1.abs_ref()) / (2i32 * big.clone());
+    let (re, im) = if a.0 >= 0 { (big, small) } else { (small, big) };
     let im = if a.1 < 0 { -im } else { im };
     (re, im)
 }
@@ -569,41 +578,16 @@ pub fn blinn_phong_normalization(n: &Float) -> Float {
     (n.clone() + 2i32) * (n.clone() + 4i32) / (8i32 * pi(p) * (two_pow + n))
 }
 
-/// Principal square root of a complex number (re >= 0, im with the sign of the argument's
-/// im), written so that nothing cancels: the larger part from sqrt((|a| +- Re a) / 2), the
-/// other as |Im a| / (2 larger). [`c_sqrt`] forms both parts from |a| +- Re a, of which one
-/// cancels where |Im a| is far below |Re a| (|N| near 2^-126, where Im(N^2) is 2^-251 beside
-/// a sin^2 near 1).
-fn c_sqrt_stable(a: &Complex) -> Complex {
-    let p = a.0.prec();
-    if a.0.is_zero() && a.1.is_zero() {
-        return (num(p, 0.0), num(p, 0.0));
-    }
-    let m = c_norm2(a).sqrt();
-    let big = ((m + a.0.clone().abs()) / 2i32).sqrt();
-    let small = Float::with_val(p, a.1.abs_ref()) / (2i32 * big.clone());
-    let (re, im) = if a.0 >= 0 { (big, small) } else { (small, big) };
-    let im = if a.1 < 0 { -im } else { im };
-    (re, im)
-}
-
-/// The rough conductor of `brdf::cook_torrance::ggx_conductor_local` from its published
-/// parts, one channel, on two local-frame directions taken as given (not renormalized):
-/// f = D(h) V(wo, wi) F(v.h) with s = wo + wi and h = s / |s|,
-///
-/// - D = alpha^2 |s|^4 / (pi (s_x^2 + s_y^2 + alpha^2 s_z^2)^2): Walter et al. 2007 eq. 33
-///   with cos(theta_h) = s_z / |s| and tan^2 = (s_x^2 + s_y^2) / s_z^2, multiplied out;
-/// - V = 0.5 / (n.l sqrt(alpha^2 + n.v^2 (1 - alpha^2)) + n.v sqrt(alpha^2 + n.l^2
-///   (1 - alpha^2))), n.v = wo.z and n.l = wi.z saturated to [0, 1]: the height-correlated
-///   Smith G2 / (4 n.v n.l) of Heitz 2014 (eq. 99 with eq. 86), multiplied out;
-/// - F = (|r_s|^2 + |r_p|^2) / 2 with r_s = (c - w) / (c + w),
-///   r_p = (N^2 c - w) / (N^2 c + w), w = sqrt(N^2 - sin^2) (principal root), N = eta + i k,
-///   at c = wo.s / |s| saturated to [0, 1] (Born and Wolf, section 14.2, with eta_c cos_t
-///   written as w).
+/// The rough conductor of `brdf::cook_torrance::ggx_conductor_local` from the references of
+/// its published parts, one channel, on two local-frame directions taken as given (not
+/// renormalized): f = D(h) V(wo, wi) F(v.h) with s = wo + wi and h = s / |s|:
+/// [`ggx_d`] at n.h = s_z / |s| (Walter et al. 2007 eq. 33), [`visibility`] of the
+/// height-correlated [`g2_correlated`] (Heitz 2014 eq. 99 with eq. 86) at n.v = wo.z and
+/// n.l = wi.z saturated to [0, 1], and [`fresnel_conductor`] (Born and Wolf, section 14.2) at
+/// c = wo.s / |s| saturated to [0, 1].
 ///
 /// 0 where wo.z <= 0 or wi.z <= 0. `alpha` is taken as given (the caller applies the
-/// kernel's clamp). sin^2 is formed as (|s|^2 - (wo.s)^2) / |s|^2 so that only c itself
-/// carries a root. Every argument should hold its `f32` value exactly at a precision such
+/// kernel's clamp). Every argument should hold its `f32` value exactly at a precision such
 /// as [`crate::harness::precision_for`]'s, which keeps s, |s|^2 and wo.s exact.
 #[must_use]
 pub fn ggx_conductor_local(
@@ -636,47 +620,19 @@ pub fn ggx_conductor_local_moved(
         return zero;
     }
     let s: [Float; 3] = core::array::from_fn(|i| Float::with_val(p, wo[i] + wi[i]));
-    let sxy = sq(&s[0]) + sq(&s[1]);
-    let ss = Float::with_val(p, &sxy + sq(&s[2]));
-    let a2 = sq(alpha);
-    // D.
-    let t = sxy + Float::with_val(p, &a2 * sq(&s[2]));
-    let d = Float::with_val(p, &a2 * sq(&ss)) / (pi(p) * sq(&t));
-    // V.
+    let ss = Float::with_val(p, sq(&s[0]) + sq(&s[1])) + sq(&s[2]);
+    // D at n.h = s_z / |s| (s_z > 0 above both horizons), V from the two cosines.
+    let d = ggx_d(&(Float::with_val(p, &s[2]) / ss.clone().sqrt()), alpha);
     let sat = |c: &Float| c.clone().clamp(&0i32, &1i32);
     let (cv, cl) = (sat(wo[2]), sat(wi[2]));
-    let lam = |c: &Float| (Float::with_val(p, &a2) + sq(c) * (1i32 - a2.clone())).sqrt();
-    let den = Float::with_val(p, &cl * lam(&cv)) + Float::with_val(p, &cv * lam(&cl));
-    let v = den.recip() / 2i32;
-    // F at c = wo.s / |s|, saturated: x >= 0 and sin^2 >= 0.
+    let g2 = g2_correlated(ggx_lambda(&cv, alpha), &ggx_lambda(&cl, alpha));
+    let v = visibility(g2, &cv, &cl);
+    // F at c = wo.s / |s|, saturated (x >= 0, c <= 1), c^2 moved by the factor 1 + rel.
     let x = (Float::with_val(p, wo[0] * &s[0])
         + Float::with_val(p, wo[1] * &s[1])
         + Float::with_val(p, wo[2] * &s[2]))
     .max(&zero);
-    let x2 = sq(&x);
-    let c2 = Float::with_val(p, &x2 / &ss);
-    let moved = Float::with_val(p, &c2 * rel);
-    let sin2 = ((Float::with_val(p, &ss - &x2)) / &ss - &moved).max(&zero);
-    let c = (c2 + moved).min(&num(p, 1.0)).sqrt();
-    let f = if c.is_zero() {
-        // Grazing: |r_s| = |r_p| = 1, or no interface at all (N = 1).
-        if *eta == 1 && k.is_zero() {
-            zero
-        } else {
-            num(p, 1.0)
-        }
-    } else {
-        let n: Complex = (eta.clone(), k.clone());
-        let n2 = c_mul(&n, &n);
-        let w = c_sqrt_stable(&(Float::with_val(p, &n2.0 - &sin2), n2.1.clone()));
-        let cc: Complex = (c.clone(), num(p, 0.0));
-        let n2c: Complex = (
-            Float::with_val(p, &n2.0 * &c),
-            Float::with_val(p, &n2.1 * &c),
-        );
-        let rs = c_norm2(&c_sub(&cc, &w)) / c_norm2(&c_add(&cc, &w));
-        let rp = c_norm2(&c_sub(&n2c, &w)) / c_norm2(&c_add(&n2c, &w));
-        (rs + rp) / 2i32
-    };
-    d * v * f
+    let c2 = Float::with_val(p, sq(&x) / &ss) * (1i32 + rel.clone());
+    let c = c2.min(&num(p, 1.0)).sqrt();
+    d * v * fresnel_conductor(&c, eta, k)
 }
